@@ -1,0 +1,68 @@
+#pragma once
+// A rigid forming body (a mold, a torso, a support disc): its placed triangle mesh, an Embree
+// BVH over it, and the pseudo-normals that tell inside from outside. All answers are double.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "fabform/geometry/closest_point.hpp"
+#include "fabform/geometry/triangle_mesh.hpp"
+
+namespace fabform {
+
+class EmbreeScene;
+
+/// A point on the body's surface with its outward normal. For a query point p, distance is
+/// |p − point| and signed_distance is negative when p is inside the body.
+struct SurfacePoint {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  double distance = 0.0;
+  double signed_distance = 0.0;
+  int triangle = -1;
+};
+
+class RigidBody {
+ public:
+  /// Throws std::invalid_argument for a mesh with no usable triangle or a bad index.
+  RigidBody(std::string name, TriangleMesh mesh);
+  ~RigidBody();
+  RigidBody(RigidBody&&) noexcept;
+  RigidBody& operator=(RigidBody&&) noexcept;
+
+  /// Closest surface point to p (BVH candidates, exact double distances).
+  SurfacePoint closest(const Eigen::Vector3d& p) const;
+
+  /// Where the straight move from → to first enters the body through its outside, if it does.
+  /// Crossings of the inside of a face (leaving the body) are not entries.
+  std::optional<SurfacePoint> first_entry(const Eigen::Vector3d& from,
+                                          const Eigen::Vector3d& to) const;
+
+  /// Whether the segment crosses the surface at all, in either direction.
+  bool segment_crosses(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
+
+  const std::string& name() const { return name_; }
+  const TriangleMesh& mesh() const { return mesh_; }
+  const BoundingBox& box() const { return box_; }
+  /// Outward unit normal of a triangle (zero for a degenerate one).
+  const Eigen::Vector3d& face_normal(int triangle) const { return face_normals_[triangle]; }
+
+ private:
+  void compute_normals();
+  Eigen::Vector3d feature_normal(int triangle, TriangleFeature feature) const;
+  SurfacePoint surface_point_on(int triangle, const Eigen::Vector3d& p) const;
+
+  std::string name_;
+  TriangleMesh mesh_;
+  BoundingBox box_;
+  std::vector<Eigen::Vector3d> face_normals_;
+  std::vector<std::array<Eigen::Vector3d, 3>> edge_normals_;  // per triangle: 01, 12, 20
+  std::vector<Eigen::Vector3d> vertex_normals_;
+  std::unique_ptr<EmbreeScene> bvh_;
+};
+
+}  // namespace fabform

@@ -1,0 +1,50 @@
+#pragma once
+// A fabric direction's measured response: tension per unit width T (N/m) against engineering
+// strain, piecewise linear (seed 003, Figure 5). Everything downstream works in N/m; a stress
+// table is converted with its thickness when it is read.
+#include <string>
+#include <vector>
+
+namespace fabform {
+
+struct TablePoint {
+  double strain = 0.0;
+  double tension_N_per_m = 0.0;
+};
+
+class TensionTable {
+ public:
+  /// Throws std::invalid_argument when the points are not a valid table: fewer than two,
+  /// non-finite, strain not strictly increasing, or a tension-only table (no negative strain)
+  /// that does not start at (0, 0).
+  explicit TensionTable(std::vector<TablePoint> points, std::string name = "");
+
+  /// Tension at a strain. Fabrics buckle rather than carry compression, so a table without
+  /// negative strains gives zero below 0; outside the measured range the end segment extends.
+  double tension(double strain) const;
+  /// dT/dε, the slope of the segment the strain falls in (0 in the slack range).
+  double slope(double strain) const;
+  /// ∫₀^ε T dε (J/m²): the energy per unit rest area of a spring stretched to ε.
+  double energy_density(double strain) const;
+
+  bool tension_only() const { return tension_only_; }
+  bool beyond_range(double strain) const { return strain > max_strain() || strain < min_strain(); }
+  double min_strain() const { return points_.front().strain; }
+  double max_strain() const { return points_.back().strain; }
+  /// Largest slope of any segment: the stiffest the fabric gets in this direction (N/m).
+  double max_slope() const;
+  const std::vector<TablePoint>& points() const { return points_; }
+  const std::string& name() const { return name_; }
+
+ private:
+  std::size_t segment_of(double strain) const;
+  double energy_from_first_point(double strain) const;
+
+  std::vector<TablePoint> points_;
+  std::vector<double> energy_at_point_;  // ∫ T dε from the first point to every point
+  double energy_at_zero_ = 0.0;
+  std::string name_;
+  bool tension_only_ = true;
+};
+
+}  // namespace fabform

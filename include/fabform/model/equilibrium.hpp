@@ -1,0 +1,32 @@
+#pragma once
+// Seed 003's convergence measure (§3.3): V_k = |R| for a free node and |R*|, the part of R
+// tangent to the body, for a node in contact whose R presses into the body; locked axes carry
+// no residual. measure_equilibrium recomputes it from positions alone (contact found by
+// geometry, not taken from any solver's bookkeeping), so a test can check a solver's claim.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fabform/model/model.hpp"
+
+namespace fabform {
+
+/// The unbalanced force at a node: R with locked axes removed, and for a node in contact
+/// (normal != nullptr) whose R presses into the body, its tangential part R*.
+Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
+                                 const Eigen::Vector3d* contact_normal);
+
+struct EquilibriumReport {
+  std::vector<double> residual_N;      // V_k per node
+  std::vector<unsigned char> contact;  // 1 where the node lies on a body
+  double max_residual_N = 0.0;         // ‖V‖∞
+  int worst_node = -1;
+  int contact_nodes = 0;
+  double max_penetration_m = 0.0;      // deepest node inside any body (0 when none is)
+};
+
+/// A node within `contact_tolerance_m` of a body's surface counts as in contact.
+EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eigen::Vector3d>& x,
+                                      double contact_tolerance_m);
+
+}  // namespace fabform

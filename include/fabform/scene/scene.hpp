@@ -1,0 +1,58 @@
+#pragma once
+// A scene as fabform runs it: validated, in SI units, with every path resolved against the
+// scene file's folder and every value remembering where it was written (for error messages).
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fabform/error.hpp"
+#include "fabform/fabric/grid.hpp"
+#include "fabform/fabric/initial_shape.hpp"
+#include "fabform/fabric/node_set.hpp"
+#include "fabform/geometry/placement.hpp"
+#include "fabform/solver/relax.hpp"
+
+namespace fabform {
+
+struct BodySpec {
+  std::string name;
+  std::string mesh_path;
+  std::string units;  // as written: m, cm, mm or in
+  Placement placement;
+  SourceLocation where;
+};
+
+struct ConstraintSpec {
+  NodeSetSpec nodes;
+  std::string nodes_text;  // the selector as written, for reports
+  AxisMask axes = kLockX | kLockY | kLockZ;
+  SourceLocation where;
+};
+
+struct SolverSpec {
+  std::string name = "relax";
+  RelaxOptions relax;
+  int threads = 1;
+};
+
+struct Scene {
+  std::string path;
+  std::string name;
+  std::string description;
+  GridSpec grid;
+  Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();  // the flat fabric's lower-left corner
+  std::string warp_path;
+  std::string weft_path;
+  std::vector<BodySpec> bodies;
+  std::vector<ConstraintSpec> constraints;
+  InitialShape initial;
+  SourceLocation initial_where;
+  SolverSpec solver;
+  std::string output_dir;  // "" when the scene names none
+};
+
+/// The solver names fabform knows, in the order `fabform solvers` lists them.
+const std::vector<std::string>& solver_names();
+
+}  // namespace fabform

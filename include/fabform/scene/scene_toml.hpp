@@ -1,0 +1,25 @@
+#pragma once
+// Reads a scene file (TOML; the keys are documented in scenes/README.md). Parsing stays here:
+// the rest of fabform sees a validated Scene.
+#include <string>
+#include <vector>
+
+#include "fabform/scene/scene.hpp"
+
+namespace fabform {
+
+/// A command-line override: a dotted key (array elements by index, e.g. body.0.scale) and a
+/// TOML value; a value that is not valid TOML is taken as a string.
+struct SceneOverride {
+  std::string key;
+  std::string value;
+};
+
+/// Parses "KEY=VALUE"; throws InputError naming the argument when there is no '='.
+SceneOverride parse_override(const std::string& argument);
+
+/// Reads, overrides and validates a scene. Throws InputError naming the file, the line and the
+/// dotted key of the first problem (or the --set argument that caused it).
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides = {});
+
+}  // namespace fabform

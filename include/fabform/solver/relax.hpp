@@ -1,0 +1,47 @@
+#pragma once
+// Seed 003's node-wise relaxation (García, Gómez, Ruiz, Boulanger 2006, §3.2–3.3), faithful:
+// each node in turn moves along its resultant R by ξ = Σ|d_k| / C (Eq. 4–5); while the move
+// does not reduce the node's residual, ξ is divided by C. A node pressed against a body slides
+// along its tangent plane and is projected back onto the surface; it leaves when R points out
+// of the body. Locked axes do not move. Stops when ‖V‖∞ ≤ e (Eq. 6) or at the iteration cap.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fabform/model/model.hpp"
+#include "fabform/solver/summary.hpp"
+
+namespace fabform {
+
+struct RelaxOptions {
+  double C = 2.0;               // seed 003's user constant: step divisor, must exceed 1
+  double tolerance_N = 1e-3;    // e: stop when ‖V‖∞ ≤ e
+  int max_iterations = 100000;  // cap on sweeps over all nodes
+  // A node gives up for this sweep once ξ has shrunk below this fraction of its first value.
+  double min_step_fraction = 1e-14;
+  // A node this close to a body's surface is on it (m).
+  double contact_tolerance_m = 1e-9;
+
+  /// Why the options cannot be used, or "" when they can.
+  std::string invalid_reason() const;
+};
+
+/// Where each node is and which body, if any, it rests on.
+struct NodeContact {
+  int body = -1;  // index into Model::bodies; -1 when free
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  bool active() const { return body >= 0; }
+};
+
+struct SolverState {
+  std::vector<Eigen::Vector3d> x;
+  std::vector<NodeContact> contact;
+
+  static SolverState at_start(const Model& model);
+};
+
+Summary relax(const Model& model, SolverState& state, const RelaxOptions& options,
+              const IterationObserver& observer = {});
+
+}  // namespace fabform

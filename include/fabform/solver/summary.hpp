@@ -1,0 +1,39 @@
+#pragma once
+// What every solver returns: why it stopped, a message for people, and the history of the
+// run iteration by iteration (the convergence plot engineers keep as a regression test).
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace fabform {
+
+enum class Termination { converged, not_converged, numerical_failure, interrupted };
+
+/// "converged", "not converged", "numerical failure", "interrupted".
+std::string to_string(Termination termination);
+
+struct IterationRecord {
+  int iteration = 0;
+  double residual_N = 0.0;  // ‖V‖∞ after the iteration
+  double seconds = 0.0;     // since the solve started
+  int contact_nodes = 0;
+};
+
+struct Summary {
+  std::string solver;
+  Termination termination = Termination::not_converged;
+  std::string message;
+  int iterations = 0;
+  double residual_N = 0.0;
+  double tolerance_N = 0.0;
+  double seconds = 0.0;
+  int worst_node = -1;  // where ‖V‖∞ is attained (or the first broken node)
+  std::vector<IterationRecord> history;
+
+  bool converged() const { return termination == Termination::converged; }
+};
+
+/// Called after each iteration (and once for the start, iteration 0).
+using IterationObserver = std::function<void(const IterationRecord&)>;
+
+}  // namespace fabform

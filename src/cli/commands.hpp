@@ -1,0 +1,16 @@
+#pragma once
+// The fabform command line: one function per command, each returning the exit status
+// (0 done, 2 bad input or usage, 3 did not converge, 4 numerical failure).
+#include <string>
+#include <vector>
+
+namespace fabform::cli {
+
+constexpr int kExitDone = 0;
+constexpr int kExitBadInput = 2;
+constexpr int kExitNotConverged = 3;
+constexpr int kExitNumericalFailure = 4;
+
+int run_command(const std::vector<std::string>& args);
+
+}  // namespace fabform::cli

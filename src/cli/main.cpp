@@ -1,0 +1,36 @@
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "fabform/scene/scene.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: fabform run SCENE [--out DIR] [--solver NAME] [--tol N] [--max-iter K]\n"
+    "                         [--threads T] [--set KEY=VALUE]... [--quiet]\n"
+    "       fabform solvers\n"
+    "       fabform --version\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
+    std::fputs(kUsage, args.empty() ? stderr : stdout);
+    return args.empty() ? fabform::cli::kExitBadInput : fabform::cli::kExitDone;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (args[0] == "run") return fabform::cli::run_command(rest);
+  if (args[0] == "solvers" && rest.empty()) {
+    for (const auto& name : fabform::solver_names()) std::printf("%s\n", name.c_str());
+    return fabform::cli::kExitDone;
+  }
+  if (args[0] == "--version") {
+    std::printf("fabform %s\n", FABFORM_VERSION);
+    return fabform::cli::kExitDone;
+  }
+  std::fprintf(stderr, "fabform: unknown command '%s'\n%s", args[0].c_str(), kUsage);
+  return fabform::cli::kExitBadInput;
+}

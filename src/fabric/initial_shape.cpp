@@ -1,0 +1,71 @@
+#include "fabform/fabric/initial_shape.hpp"
+
+#include <cmath>
+
+namespace fabform {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Eigen::Vector3d wrapped(const FabricGrid& grid, int node, const Eigen::Vector3d& origin,
+                        const InitialShape& shape) {
+  const Eigen::Vector3d flat = grid.rest_position(node);
+  const double fraction = flat.x() / grid.spec().width_m - 0.5;
+  const double angle = (shape.facing_deg + shape.span_deg * fraction) * kPi / 180.0;
+  return {shape.axis_xy_m.x() + shape.radius_m * std::cos(angle),
+          shape.axis_xy_m.y() + shape.radius_m * std::sin(angle), origin.z() + flat.y()};
+}
+
+double lift_of(const FabricGrid& grid, int node, const InitialShape& shape) {
+  const Eigen::Vector3d flat = grid.rest_position(node);
+  switch (shape.kind) {
+    case InitialShape::Kind::lift: return grid.on_perimeter(node) ? 0.0 : shape.height_m;
+    case InitialShape::Kind::bump:
+      return shape.height_m * std::sin(kPi * flat.x() / grid.spec().width_m) *
+             std::sin(kPi * flat.y() / grid.spec().height_m);
+    default: return 0.0;
+  }
+}
+
+}  // namespace
+
+std::string InitialShape::invalid_reason() const {
+  const bool finite = std::isfinite(height_m) && std::isfinite(radius_m) &&
+                      std::isfinite(facing_deg) && std::isfinite(span_deg) &&
+                      axis_xy_m.allFinite();
+  if (!finite) return "values must be finite";
+  if ((kind == Kind::lift || kind == Kind::bump) && height_m == 0.0)
+    return "height_m must not be zero";
+  if (kind == Kind::wrap && !(radius_m > 0.0)) return "radius_m must be positive";
+  if (kind == Kind::wrap && !(span_deg > 0.0 && span_deg < 360.0))
+    return "span_deg must be in (0, 360)";
+  return "";
+}
+
+bool parse_initial_kind(const std::string& name, InitialShape::Kind* kind) {
+  using Kind = InitialShape::Kind;
+  if (name == "flat") *kind = Kind::flat;
+  else if (name == "lift") *kind = Kind::lift;
+  else if (name == "bump") *kind = Kind::bump;
+  else if (name == "wrap") *kind = Kind::wrap;
+  else return false;
+  return true;
+}
+
+std::vector<Eigen::Vector3d> initial_positions(const FabricGrid& grid,
+                                               const Eigen::Vector3d& origin,
+                                               const InitialShape& shape) {
+  std::vector<Eigen::Vector3d> positions(static_cast<std::size_t>(grid.node_count()));
+  for (int k = 0; k < grid.node_count(); ++k) {
+    auto& x = positions[static_cast<std::size_t>(k)];
+    if (shape.kind == InitialShape::Kind::wrap) {
+      x = wrapped(grid, k, origin, shape);
+    } else {
+      x = origin + grid.rest_position(k);
+      x.z() += lift_of(grid, k, shape);
+    }
+  }
+  return positions;
+}
+
+}  // namespace fabform

@@ -1,0 +1,98 @@
+#include "fabform/fabric/node_set.hpp"
+
+#include <limits>
+
+namespace fabform {
+
+bool parse_named_node_set(const std::string& name, NodeSetSpec* spec) {
+  using Kind = NodeSetSpec::Kind;
+  static const std::pair<const char*, Kind> kNames[] = {
+      {"perimeter", Kind::perimeter},     {"corners", Kind::corners},
+      {"edge:left", Kind::edge_left},     {"edge:right", Kind::edge_right},
+      {"edge:bottom", Kind::edge_bottom}, {"edge:top", Kind::edge_top}};
+  for (const auto& [text, kind] : kNames)
+    if (name == text) {
+      spec->kind = kind;
+      return true;
+    }
+  return false;
+}
+
+namespace {
+
+bool in_named_set(const FabricGrid& grid, NodeSetSpec::Kind kind, int i, int j) {
+  using Kind = NodeSetSpec::Kind;
+  const int last_i = grid.nodes_warp() - 1, last_j = grid.nodes_weft() - 1;
+  switch (kind) {
+    case Kind::perimeter: return i == 0 || j == 0 || i == last_i || j == last_j;
+    case Kind::edge_left: return i == 0;
+    case Kind::edge_right: return i == last_i;
+    case Kind::edge_bottom: return j == 0;
+    case Kind::edge_top: return j == last_j;
+    case Kind::corners: return (i == 0 || i == last_i) && (j == 0 || j == last_j);
+    default: return false;
+  }
+}
+
+int nearest_node(const FabricGrid& grid, const Eigen::Vector2d& point) {
+  int best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < grid.node_count(); ++k) {
+    const double distance = (grid.rest_position(k).head<2>() - point).squaredNorm();
+    if (distance < best_distance) best = k, best_distance = distance;
+  }
+  return best;
+}
+
+bool in_box(const Eigen::Vector2d& p, const NodeSetSpec& spec) {
+  return (p.array() >= spec.box_min.array()).all() && (p.array() <= spec.box_max.array()).all();
+}
+
+}  // namespace
+
+std::vector<int> select_nodes(const FabricGrid& grid, const NodeSetSpec& spec) {
+  using Kind = NodeSetSpec::Kind;
+  std::vector<int> nodes;
+  if (spec.kind == Kind::index) {
+    if (spec.i >= 0 && spec.j >= 0 && spec.i < grid.nodes_warp() && spec.j < grid.nodes_weft())
+      nodes.push_back(grid.node(spec.i, spec.j));
+    return nodes;
+  }
+  if (spec.kind == Kind::nearest) return {nearest_node(grid, spec.point)};
+  for (int k = 0; k < grid.node_count(); ++k) {
+    const bool selected = spec.kind == Kind::box
+                              ? in_box(grid.rest_position(k).head<2>(), spec)
+                              : in_named_set(grid, spec.kind, grid.i_of(k), grid.j_of(k));
+    if (selected) nodes.push_back(k);
+  }
+  return nodes;
+}
+
+bool parse_axes(const std::string& text, AxisMask* mask) {
+  AxisMask result = 0;
+  for (const char c : text) {
+    const AxisMask bit = c == 'x' ? kLockX : c == 'y' ? kLockY : c == 'z' ? kLockZ : 0;
+    if (bit == 0 || (result & bit)) return false;
+    result = static_cast<AxisMask>(result | bit);
+  }
+  if (result == 0) return false;
+  *mask = result;
+  return true;
+}
+
+std::string axes_to_string(AxisMask mask) {
+  std::string text;
+  if (mask & kLockX) text += 'x';
+  if (mask & kLockY) text += 'y';
+  if (mask & kLockZ) text += 'z';
+  return text;
+}
+
+Eigen::Vector3d remove_locked(const Eigen::Vector3d& v, AxisMask mask) {
+  Eigen::Vector3d free = v;
+  for (int axis = 0; axis < 3; ++axis)
+    if (mask & (1 << axis)) free[axis] = 0.0;
+  return free;
+}
+
+}  // namespace fabform

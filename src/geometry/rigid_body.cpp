@@ -1,0 +1,149 @@
+#include "fabform/geometry/rigid_body.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "geometry/embree_scene.hpp"
+
+namespace fabform {
+namespace {
+
+void validate(const TriangleMesh& mesh) {
+  if (mesh.triangles.empty()) throw std::invalid_argument("the mesh has no triangles");
+  const int count = static_cast<int>(mesh.vertices.size());
+  for (const auto& p : mesh.vertices)
+    if (!p.allFinite()) throw std::invalid_argument("the mesh has a non-finite vertex");
+  for (const auto& t : mesh.triangles)
+    for (const int v : t)
+      if (v < 0 || v >= count) throw std::invalid_argument("a triangle index is out of range");
+}
+
+double corner_angle(const Eigen::Vector3d& at, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+  const Eigen::Vector3d u = p - at, v = q - at;
+  const double nu = u.norm(), nv = v.norm();
+  if (nu == 0.0 || nv == 0.0) return 0.0;
+  return std::acos(std::clamp(u.dot(v) / (nu * nv), -1.0, 1.0));
+}
+
+Eigen::Vector3d normalized_or_zero(const Eigen::Vector3d& v) {
+  const double n = v.norm();
+  return n > 0.0 ? Eigen::Vector3d(v / n) : Eigen::Vector3d::Zero();
+}
+
+}  // namespace
+
+RigidBody::RigidBody(std::string name, TriangleMesh mesh)
+    : name_(std::move(name)), mesh_(std::move(mesh)) {
+  validate(mesh_);
+  box_ = bounding_box(mesh_.vertices);
+  compute_normals();
+  bvh_ = std::make_unique<EmbreeScene>(mesh_.vertices, mesh_.triangles);
+}
+
+RigidBody::~RigidBody() = default;
+RigidBody::RigidBody(RigidBody&&) noexcept = default;
+RigidBody& RigidBody::operator=(RigidBody&&) noexcept = default;
+
+// Angle-weighted pseudo-normals (Bærentzen & Aanæs 2005): the sign of (p − c)·n at the
+// closest feature tells inside from outside, also at edges and vertices.
+void RigidBody::compute_normals() {
+  const auto& V = mesh_.vertices;
+  face_normals_.resize(mesh_.triangles.size());
+  vertex_normals_.assign(V.size(), Eigen::Vector3d::Zero());
+  std::map<std::pair<int, int>, Eigen::Vector3d> edge_sum;
+  for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    const Eigen::Vector3d n = normalized_or_zero((V[tri[1]] - V[tri[0]]).cross(V[tri[2]] - V[tri[0]]));
+    face_normals_[t] = n;
+    for (int c = 0; c < 3; ++c) {
+      const int a = tri[c], b = tri[(c + 1) % 3], o = tri[(c + 2) % 3];
+      vertex_normals_[a] += corner_angle(V[a], V[b], V[o]) * n;
+      // Eigen does not zero a default-constructed vector, so insert zero explicitly.
+      auto slot = edge_sum.try_emplace({std::min(a, b), std::max(a, b)}, Eigen::Vector3d::Zero());
+      slot.first->second += n;
+    }
+  }
+  for (auto& n : vertex_normals_) n = normalized_or_zero(n);
+  edge_normals_.resize(mesh_.triangles.size());
+  for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    for (int c = 0; c < 3; ++c) {
+      const int a = tri[c], b = tri[(c + 1) % 3];
+      edge_normals_[t][c] = normalized_or_zero(edge_sum.at({std::min(a, b), std::max(a, b)}));
+    }
+  }
+}
+
+Eigen::Vector3d RigidBody::feature_normal(int triangle, TriangleFeature feature) const {
+  const auto& tri = mesh_.triangles[triangle];
+  switch (feature) {
+    case TriangleFeature::face: return face_normals_[triangle];
+    case TriangleFeature::edge01: return edge_normals_[triangle][0];
+    case TriangleFeature::edge12: return edge_normals_[triangle][1];
+    case TriangleFeature::edge20: return edge_normals_[triangle][2];
+    case TriangleFeature::vertex0: return vertex_normals_[tri[0]];
+    case TriangleFeature::vertex1: return vertex_normals_[tri[1]];
+    case TriangleFeature::vertex2: return vertex_normals_[tri[2]];
+  }
+  return face_normals_[triangle];
+}
+
+SurfacePoint RigidBody::surface_point_on(int triangle, const Eigen::Vector3d& p) const {
+  const auto& tri = mesh_.triangles[triangle];
+  const auto& V = mesh_.vertices;
+  const TriangleClosest c = closest_point_on_triangle(p, V[tri[0]], V[tri[1]], V[tri[2]]);
+  SurfacePoint s;
+  s.point = c.point;
+  s.triangle = triangle;
+  s.normal = feature_normal(triangle, c.feature);
+  if (s.normal.isZero()) s.normal = face_normals_[triangle];
+  s.distance = (p - c.point).norm();
+  s.signed_distance = (p - c.point).dot(s.normal) < 0.0 ? -s.distance : s.distance;
+  return s;
+}
+
+SurfacePoint RigidBody::closest(const Eigen::Vector3d& p) const {
+  SurfacePoint best;
+  best.distance = std::numeric_limits<double>::infinity();
+  // Float boxes may sit an ulp inside the double triangles: keep a margin so no candidate
+  // that could be closest is culled.
+  const double margin = 1e-6 * box_.diagonal() + 1e-12;
+  bvh_->visit_near(p, std::numeric_limits<double>::infinity(), [&](int triangle) {
+    const SurfacePoint s = surface_point_on(triangle, p);
+    if (s.distance < best.distance) best = s;
+    return best.distance + margin;
+  });
+  if (best.triangle < 0) best = surface_point_on(0, p);  // only if Embree found nothing at all
+  return best;
+}
+
+std::optional<SurfacePoint> RigidBody::first_entry(const Eigen::Vector3d& from,
+                                                   const Eigen::Vector3d& to) const {
+  const Eigen::Vector3d direction = to - from;
+  if (direction.isZero()) return std::nullopt;
+  double t_near = 0.0;
+  // Step past faces crossed from the inside; a handful is plenty for real meshes.
+  for (int attempt = 0; attempt < 16 && t_near <= 1.0; ++attempt) {
+    const auto hit = bvh_->first_hit(from, direction, t_near, 1.0);
+    if (!hit) return std::nullopt;
+    const auto& tri = mesh_.triangles[hit->triangle];
+    const auto& V = mesh_.vertices;
+    if (face_normals_[hit->triangle].dot(direction) < 0.0) {
+      const double t = segment_plane_crossing(from, to, V[tri[0]], V[tri[1]], V[tri[2]])
+                           .value_or(std::clamp(hit->t, 0.0, 1.0));
+      return surface_point_on(hit->triangle, from + t * direction);
+    }
+    t_near = std::nextafter(static_cast<float>(hit->t), 2.0f);
+  }
+  return std::nullopt;
+}
+
+bool RigidBody::segment_crosses(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+  const Eigen::Vector3d direction = to - from;
+  return !direction.isZero() && bvh_->first_hit(from, direction, 0.0, 1.0).has_value();
+}
+
+}  // namespace fabform

@@ -1,0 +1,146 @@
+#include "fabform/material/material_csv.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+
+#include "fabform/error.hpp"
+
+namespace fabform {
+namespace {
+
+constexpr std::size_t kMaxLineLength = 4096;
+constexpr std::size_t kMaxPoints = 100000;
+
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+struct Cells {
+  std::string first, second;
+};
+
+std::optional<Cells> split_pair(const std::string& line) {
+  const auto comma = line.find(',');
+  if (comma == std::string::npos || line.find(',', comma + 1) != std::string::npos)
+    return std::nullopt;
+  return Cells{trim(line.substr(0, comma)), trim(line.substr(comma + 1))};
+}
+
+std::optional<double> parse_number(const std::string& cell) {
+  if (cell.empty()) return std::nullopt;
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(cell.c_str(), &end);
+  if (end != cell.c_str() + cell.size() || errno == ERANGE || !std::isfinite(value))
+    return std::nullopt;
+  return value;
+}
+
+class TableParser {
+ public:
+  explicit TableParser(std::string source) : source_(std::move(source)) {}
+
+  TensionTable parse(std::istream& in) {
+    std::string raw;
+    while (std::getline(in, raw)) {
+      ++line_;
+      if (raw.size() > kMaxLineLength) fail("line longer than 4096 characters");
+      const std::string line = trim(raw);
+      if (line.empty() || line[0] == '#') continue;
+      take(line);
+    }
+    return finish();
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& message, int line = -1) const {
+    throw InputError({source_, line < 0 ? line_ : line, ""}, message);
+  }
+
+  void take(const std::string& line) {
+    const auto cells = split_pair(line);
+    if (!cells) fail("expected two comma-separated cells, got '" + line + "'");
+    if (!header_seen_) return take_before_header(*cells);
+    take_point(*cells);
+  }
+
+  void take_before_header(const Cells& cells) {
+    if (cells.first == "thickness_m") {
+      const auto value = parse_number(cells.second);
+      if (!value || *value <= 0.0) fail("thickness_m must be a positive number of metres");
+      thickness_m_ = value;
+      thickness_line_ = line_;
+      return;
+    }
+    if (cells.first != "strain")
+      fail("expected the header 'strain,tension_N_per_m' or 'strain,stress_Pa', or a "
+           "'thickness_m,VALUE' line before it; got '" + cells.first + "," + cells.second + "'");
+    if (cells.second == "stress_Pa") {
+      is_stress_ = true;
+    } else if (cells.second != "tension_N_per_m") {
+      fail("unknown unit column '" + cells.second + "' (expected tension_N_per_m or stress_Pa)");
+    }
+    header_seen_ = true;
+    header_line_ = line_;
+  }
+
+  void take_point(const Cells& cells) {
+    const auto strain = parse_number(cells.first);
+    const auto value = parse_number(cells.second);
+    if (!strain) fail("strain '" + cells.first + "' is not a finite number");
+    if (!value) fail("value '" + cells.second + "' is not a finite number");
+    if (!points_.empty() && !(*strain > points_.back().strain))
+      fail("strain must increase strictly: " + cells.first + " follows " +
+           std::to_string(points_.back().strain));
+    if (points_.size() >= kMaxPoints) fail("more than 100000 points");
+    points_.push_back({*strain, *value});
+    if (points_.size() == 1) first_point_line_ = line_;
+  }
+
+  TensionTable finish() {
+    if (!header_seen_) fail("no header line 'strain,tension_N_per_m' or 'strain,stress_Pa'", 0);
+    if (is_stress_ && !thickness_m_)
+      fail("a stress_Pa table needs a 'thickness_m,VALUE' line before its header", header_line_);
+    if (!is_stress_ && thickness_m_)
+      fail("thickness_m is only meaningful for a stress_Pa table", thickness_line_);
+    if (points_.size() < 2) fail("a table needs at least two points", 0);
+    if (is_stress_)
+      for (auto& point : points_) point.tension_N_per_m *= *thickness_m_;
+    try {
+      return TensionTable(points_, source_);
+    } catch (const std::invalid_argument& error) {
+      fail(error.what(), first_point_line_);
+    }
+  }
+
+  std::string source_;
+  int line_ = 0;
+  int header_line_ = 0;
+  int thickness_line_ = 0;
+  int first_point_line_ = 0;
+  bool header_seen_ = false;
+  bool is_stress_ = false;
+  std::optional<double> thickness_m_;
+  std::vector<TablePoint> points_;
+};
+
+}  // namespace
+
+TensionTable parse_material_table(std::istream& in, const std::string& source_name) {
+  return TableParser(source_name).parse(in);
+}
+
+TensionTable read_material_table(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, ""}, "cannot open the material table");
+  return parse_material_table(in, path);
+}
+
+}  // namespace fabform

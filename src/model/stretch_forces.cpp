@@ -1,0 +1,62 @@
+#include "fabform/model/stretch_forces.hpp"
+
+#include <cmath>
+
+#include "fabform/fabric/spring.hpp"
+
+namespace fabform {
+
+Eigen::Vector3d node_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
+                              const Eigen::Vector3d& at) {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  for (const int s : model.grid.springs_at(node)) {
+    if (s < 0) continue;
+    const Spring& spring = model.grid.springs()[static_cast<std::size_t>(s)];
+    const int other = spring.a == node ? spring.b : spring.a;
+    force += spring_force_on_a(at, x[static_cast<std::size_t>(other)], spring,
+                               model.table(spring.direction));
+  }
+  return force;
+}
+
+double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x, int node) {
+  double sum = 0.0;
+  for (const int s : model.grid.springs_at(node)) {
+    if (s < 0) continue;
+    const Spring& spring = model.grid.springs()[static_cast<std::size_t>(s)];
+    const double length =
+        (x[static_cast<std::size_t>(spring.b)] - x[static_cast<std::size_t>(spring.a)]).norm();
+    sum += std::abs(length - spring.rest_length);
+  }
+  return sum;
+}
+
+double stretch_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
+  double energy = 0.0;
+  for (const Spring& spring : model.grid.springs())
+    energy += spring_energy(x[static_cast<std::size_t>(spring.a)],
+                            x[static_cast<std::size_t>(spring.b)], spring,
+                            model.table(spring.direction));
+  return energy;
+}
+
+NodeStrains node_strains(const Model& model, const std::vector<Eigen::Vector3d>& x) {
+  const auto n = static_cast<std::size_t>(model.node_count());
+  NodeStrains strains{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+  std::vector<int> warp_count(n, 0), weft_count(n, 0);
+  for (const Spring& spring : model.grid.springs()) {
+    const auto a = static_cast<std::size_t>(spring.a), b = static_cast<std::size_t>(spring.b);
+    const double strain = spring_strain(x[a], x[b], spring.rest_length);
+    auto& field = spring.direction == Direction::warp ? strains.warp : strains.weft;
+    auto& count = spring.direction == Direction::warp ? warp_count : weft_count;
+    field[a] += strain, field[b] += strain;
+    ++count[a], ++count[b];
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (warp_count[k] > 0) strains.warp[k] /= warp_count[k];
+    if (weft_count[k] > 0) strains.weft[k] /= weft_count[k];
+  }
+  return strains;
+}
+
+}  // namespace fabform

@@ -1,0 +1,53 @@
+#include "fabform/model/table_range.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "fabform/fabric/spring.hpp"
+
+namespace fabform {
+namespace {
+
+struct RangeCount {
+  int beyond = 0;
+  double extreme = 0.0;
+};
+
+std::string describe(const TensionTable& table, const char* direction, const RangeCount& c,
+                     int total) {
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%d of %d %s springs end outside the measured range of %s (strain %.4g to %.4g; "
+                "reached %.4g): the table's end segment was extended",
+                c.beyond, total, direction, table.name().c_str(), table.min_strain(),
+                table.max_strain(), c.extreme);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> table_range_warnings(const Model& model,
+                                              const std::vector<Eigen::Vector3d>& x) {
+  RangeCount warp, weft;
+  int warp_total = 0, weft_total = 0;
+  for (const Spring& spring : model.grid.springs()) {
+    const bool is_warp = spring.direction == Direction::warp;
+    const TensionTable& table = model.table(spring.direction);
+    const double strain = spring_strain(x[static_cast<std::size_t>(spring.a)],
+                                        x[static_cast<std::size_t>(spring.b)], spring.rest_length);
+    ++(is_warp ? warp_total : weft_total);
+    // Slack springs of a tension-only table carry no force: nothing is extrapolated there.
+    const bool outside = strain > table.max_strain() || (!table.tension_only() && strain < table.min_strain());
+    if (!outside) continue;
+    RangeCount& c = is_warp ? warp : weft;
+    ++c.beyond;
+    if (std::abs(strain) > std::abs(c.extreme)) c.extreme = strain;
+  }
+  std::vector<std::string> warnings;
+  if (warp.beyond > 0) warnings.push_back(describe(model.warp, "warp", warp, warp_total));
+  if (weft.beyond > 0) warnings.push_back(describe(model.weft, "weft", weft, weft_total));
+  return warnings;
+}
+
+}  // namespace fabform

@@ -1,0 +1,141 @@
+#include "fabform/output/result_writer.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "fabform/model/stretch_forces.hpp"
+
+namespace fabform {
+namespace {
+
+namespace fs = std::filesystem;
+
+// JSON has no NaN or infinity; such values are written as null.
+nlohmann::json number(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+std::string result_json(const RunRecord& run) {
+  const Summary& s = run.summary;
+  nlohmann::json j;
+  j["fabform_version"] = FABFORM_VERSION;
+  j["scene"] = run.scene.name;
+  j["scene_file"] = run.scene.path;
+  j["solver"] = s.solver;
+  j["threads"] = run.threads;
+  j["converged"] = s.converged();
+  j["termination"] = to_string(s.termination);
+  j["message"] = s.message;
+  j["iterations"] = s.iterations;
+  j["residual_N"] = number(s.residual_N);
+  j["tolerance_N"] = s.tolerance_N;
+  j["residual_recomputed_N"] = number(run.check.max_residual_N);
+  j["wall_seconds"] = run.wall_seconds;
+  j["solve_seconds"] = s.seconds;
+  j["nodes"] = run.model.node_count();
+  j["grid"] = {run.model.grid.nodes_warp(), run.model.grid.nodes_weft()};
+  j["contact_nodes"] = run.check.contact_nodes;
+  j["max_penetration_m"] = number(run.check.max_penetration_m);
+  j["modelled"] = {"stretch: warp and weft springs, tension-only piecewise-linear tables"};
+  j["materials"] = {{"warp", run.scene.warp_path}, {"weft", run.scene.weft_path}};
+  nlohmann::json bodies = nlohmann::json::array();
+  for (const RigidBody& b : run.model.bodies)
+    bodies.push_back({{"name", b.name()}, {"triangles", b.mesh().triangles.size()}});
+  j["bodies"] = bodies;
+  j["warnings"] = run.warnings;
+  return j.dump(2) + "\n";
+}
+
+std::string convergence_csv(const Summary& s) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "iteration,residual_N,seconds,contact_nodes\n";
+  for (const IterationRecord& r : s.history)
+    out << r.iteration << ',' << r.residual_N << ',' << r.seconds << ',' << r.contact_nodes << '\n';
+  return out.str();
+}
+
+// Quads of the grid, as vertex indices, counter-clockwise seen from +z in the flat fabric.
+std::vector<std::array<int, 4>> grid_quads(const FabricGrid& grid) {
+  std::vector<std::array<int, 4>> quads;
+  for (int j = 0; j + 1 < grid.nodes_weft(); ++j)
+    for (int i = 0; i + 1 < grid.nodes_warp(); ++i)
+      quads.push_back({grid.node(i, j), grid.node(i + 1, j), grid.node(i + 1, j + 1),
+                       grid.node(i, j + 1)});
+  return quads;
+}
+
+std::string fabric_obj(const RunRecord& run) {
+  std::ostringstream out;
+  out.precision(12);
+  out << "# fabform " << FABFORM_VERSION << ": formed fabric of scene " << run.scene.name
+      << " (metres)\n";
+  for (const auto& x : run.state.x) out << "v " << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
+  for (const auto& q : grid_quads(run.model.grid))
+    out << "f " << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' ' << q[3] + 1 << '\n';
+  return out.str();
+}
+
+void vtk_field(std::ostringstream& out, const char* name, const std::vector<double>& values) {
+  out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
+  for (const double v : values) out << (std::isfinite(v) ? v : 0.0) << '\n';
+}
+
+std::string fabric_vtk(const RunRecord& run) {
+  std::ostringstream out;
+  out.precision(12);
+  const auto& x = run.state.x;
+  const auto quads = grid_quads(run.model.grid);
+  out << "# vtk DataFile Version 3.0\nfabform " << run.scene.name << " formed fabric\nASCII\n"
+      << "DATASET POLYDATA\nPOINTS " << x.size() << " double\n";
+  for (const auto& p : x) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  out << "POLYGONS " << quads.size() << ' ' << 5 * quads.size() << '\n';
+  for (const auto& q : quads) out << "4 " << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+  const NodeStrains strains = node_strains(run.model, x);
+  out << "POINT_DATA " << x.size() << '\n';
+  vtk_field(out, "strain_warp", strains.warp);
+  vtk_field(out, "strain_weft", strains.weft);
+  vtk_field(out, "contact", std::vector<double>(run.check.contact.begin(), run.check.contact.end()));
+  vtk_field(out, "residual_N", run.check.residual_N);
+  return out.str();
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << content;
+    out.flush();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw std::runtime_error(path + ": cannot write");
+    }
+  }
+  std::error_code ec;
+  fs::rename(temporary, path, ec);
+  if (ec) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot write (" + ec.message() + ")");
+  }
+}
+
+void write_results(const std::string& dir, const RunRecord& run) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) throw std::runtime_error(dir + ": cannot create the output folder");
+  // Everything is rendered before anything is written, so a failure leaves the folder as it was.
+  const std::pair<const char*, std::string> files[] = {
+      {"convergence.csv", convergence_csv(run.summary)},
+      {"fabric.obj", fabric_obj(run)},
+      {"fabric.vtk", fabric_vtk(run)},
+      {"result.json", result_json(run)}};
+  for (const auto& [name, content] : files) write_file_atomically((fs::path(dir) / name).string(), content);
+}
+
+}  // namespace fabform

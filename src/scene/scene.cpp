@@ -1,0 +1,10 @@
+#include "fabform/scene/scene.hpp"
+
+namespace fabform {
+
+const std::vector<std::string>& solver_names() {
+  static const std::vector<std::string> names = {"relax"};
+  return names;
+}
+
+}  // namespace fabform

@@ -1,0 +1,399 @@
+#include "fabform/scene/scene_toml.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+namespace fabform {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kOverrideSource = "--set";
+
+SourceLocation locate(const toml::node* node, const std::string& file, const std::string& key) {
+  if (!node) return {file, 0, key};
+  const auto& source = node->source();
+  if (source.path && *source.path == kOverrideSource) return {"command line --set", 0, key};
+  return {file, static_cast<int>(source.begin.line), key};
+}
+
+// One TOML table being read: remembers which keys were used, so that what is left over can be
+// reported as unknown, and knows its dotted prefix and file for error messages.
+class TableReader {
+ public:
+  TableReader(const toml::table* table, std::string prefix, std::string file)
+      : table_(table), prefix_(std::move(prefix)), file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+    throw InputError(locate(node(key) ? node(key) : table_, file_, dotted(key)), message);
+  }
+
+  std::string dotted(const std::string& key) const {
+    return prefix_.empty() ? key : prefix_ + "." + key;
+  }
+
+  bool has(const std::string& key) const { return node(key) != nullptr; }
+
+  const toml::node* take(const std::string& key) {
+    used_.insert(key);
+    return node(key);
+  }
+
+  double number(const std::string& key, double fallback, bool required = false) {
+    const toml::node* n = take(key);
+    if (!n) {
+      if (required) fail(key, "missing (a number is required)");
+      return fallback;
+    }
+    const auto value = n->value<double>();
+    if (!value || n->is_boolean()) fail(key, "must be a number");
+    if (!std::isfinite(*value)) fail(key, "must be finite");
+    return *value;
+  }
+
+  double positive(const std::string& key, double fallback, bool required = false) {
+    const double value = number(key, fallback, required);
+    if (!(value > 0.0)) fail(key, "must be positive");
+    return value;
+  }
+
+  long long integer(const std::string& key, long long fallback, bool required = false) {
+    const toml::node* n = take(key);
+    if (!n) {
+      if (required) fail(key, "missing (an integer is required)");
+      return fallback;
+    }
+    if (!n->is_integer()) fail(key, "must be an integer");
+    return *n->value<long long>();
+  }
+
+  std::string text(const std::string& key, const std::string& fallback, bool required = false) {
+    const toml::node* n = take(key);
+    if (!n) {
+      if (required) fail(key, "missing (a string is required)");
+      return fallback;
+    }
+    if (!n->is_string()) fail(key, "must be a string");
+    return *n->value<std::string>();
+  }
+
+  template <int N>
+  Eigen::Matrix<double, N, 1> vector(const std::string& key, const Eigen::Matrix<double, N, 1>& fallback,
+                                     bool required = false) {
+    const toml::node* n = take(key);
+    if (!n) {
+      if (required) fail(key, "missing (an array of " + std::to_string(N) + " numbers is required)");
+      return fallback;
+    }
+    return read_vector<N>(*n, key);
+  }
+
+  template <int N>
+  Eigen::Matrix<double, N, 1> read_vector(const toml::node& n, const std::string& key) const {
+    const toml::array* array = n.as_array();
+    if (!array || array->size() != N)
+      fail(key, "must be an array of " + std::to_string(N) + " numbers");
+    Eigen::Matrix<double, N, 1> v;
+    for (int c = 0; c < N; ++c) {
+      const auto value = (*array)[static_cast<std::size_t>(c)].value<double>();
+      if (!value || (*array)[static_cast<std::size_t>(c)].is_boolean())
+        fail(key, "must be an array of " + std::to_string(N) + " numbers");
+      if (!std::isfinite(*value)) fail(key, "must hold finite numbers");
+      v[c] = *value;
+    }
+    return v;
+  }
+
+  std::pair<long long, long long> integer_pair(const std::string& key, bool required) {
+    const toml::node* n = take(key);
+    if (!n) {
+      if (required) fail(key, "missing (an array of two integers is required)");
+      return {0, 0};
+    }
+    const toml::array* array = n->as_array();
+    if (!array || array->size() != 2 || !(*array)[0].is_integer() || !(*array)[1].is_integer())
+      fail(key, "must be an array of two integers");
+    return {*(*array)[0].value<long long>(), *(*array)[1].value<long long>()};
+  }
+
+  TableReader table(const std::string& key, bool required) {
+    const toml::node* n = take(key);
+    if (!n) {
+      if (required) fail(key, "missing (a table is required)");
+      return TableReader(&empty_table(), dotted(key), file_);
+    }
+    if (!n->is_table()) fail(key, "must be a table");
+    return TableReader(n->as_table(), dotted(key), file_);
+  }
+
+  std::vector<TableReader> tables(const std::string& key) {
+    std::vector<TableReader> readers;
+    const toml::node* n = take(key);
+    if (!n) return readers;
+    const toml::array* array = n->as_array();
+    if (!array) fail(key, "must be an array of tables ([[" + dotted(key) + "]])");
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      const toml::table* t = (*array)[i].as_table();
+      if (!t) fail(key, "element " + std::to_string(i) + " must be a table");
+      readers.emplace_back(t, dotted(key) + "." + std::to_string(i), file_);
+    }
+    return readers;
+  }
+
+  /// Reports the first key nobody asked for.
+  void reject_unknown(const std::vector<std::string>& known) const {
+    for (auto&& [key, value] : *table_) {
+      const std::string name(key.str());
+      if (used_.count(name)) continue;
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw InputError(locate(&value, file_, dotted(name)),
+                       "unknown key" + (list.empty() ? std::string() : " (known here: " + list + ")"));
+    }
+  }
+
+  SourceLocation where() const { return locate(table_, file_, prefix_); }
+  const std::string& file() const { return file_; }
+
+ private:
+  const toml::node* node(const std::string& key) const { return table_->get(key); }
+  static const toml::table& empty_table() {
+    static const toml::table empty;
+    return empty;
+  }
+
+  const toml::table* table_;
+  std::string prefix_;
+  std::string file_;
+  std::set<std::string> used_;
+};
+
+std::string resolve(const std::string& scene_path, const std::string& path) {
+  if (path.empty() || fs::path(path).is_absolute()) return path;
+  return (fs::path(scene_path).parent_path() / path).lexically_normal().string();
+}
+
+int checked_int(TableReader& r, const std::string& key, long long value, long long lo, long long hi) {
+  if (value < lo || value > hi)
+    r.fail(key, "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+  return static_cast<int>(value);
+}
+
+void read_fabric(TableReader r, Scene* scene) {
+  const Eigen::Vector2d size = r.vector<2>("size_m", Eigen::Vector2d::Zero(), true);
+  if (!(size.array() > 0.0).all()) r.fail("size_m", "both sides must be positive");
+  const auto [n, m] = r.integer_pair("divisions", true);
+  scene->grid = {size.x(), size.y(), checked_int(r, "divisions", n, 1, 10000),
+                 checked_int(r, "divisions", m, 1, 10000)};
+  if (static_cast<long long>(n + 1) * (m + 1) > 50'000'000LL)
+    r.fail("divisions", "more than 50 million nodes");
+  scene->origin_m = r.vector<3>("origin_m", Eigen::Vector3d::Zero());
+  scene->warp_path = resolve(scene->path, r.text("warp", "", true));
+  scene->weft_path = resolve(scene->path, r.text("weft", "", true));
+  r.reject_unknown({"size_m", "divisions", "origin_m", "warp", "weft"});
+}
+
+BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t index) {
+  BodySpec body;
+  body.where = r.where();
+  body.name = r.text("name", "body" + std::to_string(index));
+  body.mesh_path = resolve(scene_path, r.text("mesh", "", true));
+  body.units = r.text("units", "", true);
+  if (!parse_length_unit(body.units, &body.placement.metres_per_unit))
+    r.fail("units", "must be one of m, cm, mm, in (got '" + body.units + "')");
+  body.placement.scale = r.positive("scale", 1.0);
+  body.placement.rotation_deg = r.vector<3>("rotation_deg", Eigen::Vector3d::Zero());
+  body.placement.translation_m = r.vector<3>("translation_m", Eigen::Vector3d::Zero());
+  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m"});
+  return body;
+}
+
+NodeSetSpec read_selector(TableReader& r, std::string* text) {
+  static const std::vector<std::string> selectors = {"nodes", "node", "nearest_m", "box_m"};
+  int given = 0;
+  for (const auto& s : selectors) given += r.has(s) ? 1 : 0;
+  if (given != 1) r.fail("nodes", "give exactly one of nodes, node, nearest_m, box_m");
+  NodeSetSpec spec;
+  if (r.has("nodes")) {
+    *text = r.text("nodes", "");
+    if (!parse_named_node_set(*text, &spec))
+      r.fail("nodes", "unknown node set '" + *text +
+                          "' (known: perimeter, corners, edge:left, edge:right, edge:bottom, "
+                          "edge:top)");
+  } else if (r.has("node")) {
+    const auto [i, j] = r.integer_pair("node", true);
+    spec.kind = NodeSetSpec::Kind::index;
+    spec.i = checked_int(r, "node", i, 0, 100000);
+    spec.j = checked_int(r, "node", j, 0, 100000);
+    *text = "node [" + std::to_string(i) + ", " + std::to_string(j) + "]";
+  } else if (r.has("nearest_m")) {
+    spec.kind = NodeSetSpec::Kind::nearest;
+    spec.point = r.vector<2>("nearest_m", Eigen::Vector2d::Zero(), true);
+    *text = "nearest_m";
+  } else {
+    const toml::node* n = r.take("box_m");
+    const toml::array* corners = n->as_array();
+    if (!corners || corners->size() != 2) r.fail("box_m", "must be [[x0, y0], [x1, y1]]");
+    spec.kind = NodeSetSpec::Kind::box;
+    spec.box_min = r.read_vector<2>((*corners)[0], "box_m");
+    spec.box_max = r.read_vector<2>((*corners)[1], "box_m");
+    *text = "box_m";
+  }
+  return spec;
+}
+
+ConstraintSpec read_constraint(TableReader r) {
+  ConstraintSpec constraint;
+  constraint.where = r.where();
+  constraint.nodes = read_selector(r, &constraint.nodes_text);
+  const std::string axes = r.text("axes", "xyz");
+  if (!parse_axes(axes, &constraint.axes))
+    r.fail("axes", "must name each of x, y, z at most once, e.g. \"xyz\" or \"xy\"");
+  r.reject_unknown({"nodes", "node", "nearest_m", "box_m", "axes"});
+  return constraint;
+}
+
+void read_initial(TableReader r, Scene* scene) {
+  scene->initial_where = r.where();
+  const std::string shape = r.text("shape", "flat");
+  if (!parse_initial_kind(shape, &scene->initial.kind))
+    r.fail("shape", "must be one of flat, lift, bump, wrap (got '" + shape + "')");
+  using Kind = InitialShape::Kind;
+  InitialShape& s = scene->initial;
+  const bool raises = s.kind == Kind::lift || s.kind == Kind::bump;
+  s.height_m = r.number("height_m", 0.0, raises);
+  if (raises && s.height_m == 0.0) r.fail("height_m", "must not be zero");
+  if (s.kind == Kind::wrap) {
+    s.axis_xy_m = r.vector<2>("axis_m", Eigen::Vector2d::Zero(), true);
+    s.radius_m = r.positive("radius_m", 0.0, true);
+    s.facing_deg = r.number("facing_deg", 0.0, true);
+    s.span_deg = r.number("span_deg", 0.0, true);
+    if (!(s.span_deg > 0.0 && s.span_deg < 360.0)) r.fail("span_deg", "must be in (0, 360)");
+  }
+  r.reject_unknown({"shape", "height_m", "axis_m", "radius_m", "facing_deg", "span_deg"});
+}
+
+void read_solver(TableReader r, Scene* scene) {
+  SolverSpec& s = scene->solver;
+  s.name = r.text("name", "relax");
+  bool known = false;
+  for (const auto& name : solver_names()) known = known || name == s.name;
+  if (!known) r.fail("name", "unknown solver '" + s.name + "' (see `fabform solvers`)");
+  s.relax.tolerance_N = r.positive("tolerance_N", s.relax.tolerance_N);
+  s.relax.max_iterations =
+      checked_int(r, "max_iterations", r.integer("max_iterations", s.relax.max_iterations), 0,
+                  1'000'000'000);
+  s.relax.C = r.number("C", s.relax.C);
+  if (!(s.relax.C > 1.0)) r.fail("C", "must be greater than 1 (the step is divided by C)");
+  s.threads = checked_int(r, "threads", r.integer("threads", 1), 1, 1024);
+  r.reject_unknown({"name", "tolerance_N", "max_iterations", "C", "threads"});
+}
+
+void read_output(TableReader r, Scene* scene) {
+  const std::string dir = r.text("dir", "");
+  scene->output_dir = resolve(scene->path, dir);
+  r.reject_unknown({"dir"});
+}
+
+Scene read_scene(const toml::table& root, const std::string& path) {
+  Scene scene;
+  scene.path = path;
+  TableReader r(&root, "", path);
+  TableReader info = r.table("scene", false);
+  scene.name = info.text("name", fs::path(path).stem().string());
+  scene.description = info.text("description", "");
+  info.reject_unknown({"name", "description"});
+  read_fabric(r.table("fabric", true), &scene);
+  const auto bodies = r.tables("body");
+  for (std::size_t b = 0; b < bodies.size(); ++b) scene.bodies.push_back(read_body(bodies[b], path, b));
+  for (auto& c : r.tables("constraint")) scene.constraints.push_back(read_constraint(c));
+  read_initial(r.table("initial", false), &scene);
+  read_solver(r.table("solver", false), &scene);
+  read_output(r.table("output", false), &scene);
+  r.reject_unknown({"scene", "fabric", "body", "constraint", "initial", "solver", "output"});
+  return scene;
+}
+
+// --- overrides -------------------------------------------------------------------------------
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts;
+  std::stringstream stream(key);
+  std::string part;
+  while (std::getline(stream, part, '.')) parts.push_back(part);
+  return parts;
+}
+
+toml::table parse_override_value(const SceneOverride& o) {
+  const auto attempt = [&](const std::string& value) {
+    return toml::parse("v = " + value, std::string_view(kOverrideSource));
+  };
+  try {
+    return attempt(o.value);
+  } catch (const toml::parse_error&) {
+    std::string quoted = "'" + o.value + "'";
+    if (o.value.find('\'') != std::string::npos || o.value.find('\n') != std::string::npos)
+      throw InputError({"command line --set", 0, o.key}, "value is neither TOML nor a plain string");
+    return attempt(quoted);
+  }
+}
+
+void apply_override(toml::table& root, const SceneOverride& o) {
+  const auto parts = split_key(o.key);
+  const auto bad = [&](const std::string& why) {
+    return InputError({"command line --set", 0, o.key}, why);
+  };
+  for (const auto& p : parts)
+    if (p.empty()) throw bad("empty part in the dotted key");
+  toml::node* current = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    if (auto* table = current->as_table()) {
+      if (!table->get(parts[i])) table->insert(parts[i], toml::table{});
+      current = table->get(parts[i]);
+    } else if (auto* array = current->as_array()) {
+      std::size_t index = 0;
+      try {
+        index = std::stoul(parts[i]);
+      } catch (const std::exception&) {
+        throw bad("'" + parts[i] + "' must be an array index");
+      }
+      if (index >= array->size()) throw bad("index " + parts[i] + " is out of range");
+      current = array->get(index);
+    } else {
+      throw bad("'" + parts[i] + "' is not a table");
+    }
+  }
+  auto* target = current->as_table();
+  if (!target) throw bad("cannot set a value inside a non-table");
+  toml::table value = parse_override_value(o);
+  value.get("v")->visit([&](auto& node) { target->insert_or_assign(parts.back(), node); });
+}
+
+}  // namespace
+
+SceneOverride parse_override(const std::string& argument) {
+  const auto equals = argument.find('=');
+  if (equals == std::string::npos || equals == 0)
+    throw InputError({"command line --set", 0, argument}, "expected KEY=VALUE");
+  return {argument.substr(0, equals), argument.substr(equals + 1)};
+}
+
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError({path, 0, ""}, "no such scene file");
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& error) {
+    throw InputError({path, static_cast<int>(error.source().begin.line), ""},
+                     std::string(error.description()));
+  }
+  for (const auto& o : overrides) apply_override(root, o);
+  return read_scene(root, path);
+}
+
+}  // namespace fabform

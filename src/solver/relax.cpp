@@ -1,0 +1,188 @@
+#include "fabform/solver/relax.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "fabform/model/equilibrium.hpp"
+#include "fabform/model/stretch_forces.hpp"
+
+namespace fabform {
+
+std::string RelaxOptions::invalid_reason() const {
+  if (!(std::isfinite(C) && C > 1.0)) return "C must be a finite number greater than 1";
+  if (!(std::isfinite(tolerance_N) && tolerance_N >= 0.0))
+    return "tolerance must be a finite, non-negative force";
+  if (max_iterations < 0) return "the iteration cap must not be negative";
+  if (!(min_step_fraction > 0.0 && min_step_fraction < 1.0))
+    return "min_step_fraction must be in (0, 1)";
+  if (!(std::isfinite(contact_tolerance_m) && contact_tolerance_m > 0.0))
+    return "contact tolerance must be positive";
+  return "";
+}
+
+SolverState SolverState::at_start(const Model& model) {
+  return {model.start, std::vector<NodeContact>(model.start.size())};
+}
+
+namespace {
+
+struct Candidate {
+  Eigen::Vector3d x;
+  NodeContact contact;
+};
+
+class Relaxation {
+ public:
+  Relaxation(const Model& model, SolverState& state, const RelaxOptions& options)
+      : model_(model), state_(state), options_(options) {}
+
+  void sweep() {
+    for (int k = 0; k < model_.node_count(); ++k) relax_node(k);
+  }
+
+  double node_residual(int k, const Eigen::Vector3d& x, const NodeContact& contact) const {
+    const Eigen::Vector3d r = node_force_at(model_, state_.x, k, x);
+    return unbalanced_force(r, lock(k), contact.active() ? &contact.normal : nullptr).norm();
+  }
+
+  struct Measure {
+    double max_residual = 0.0;
+    int worst_node = -1;
+    int contact_nodes = 0;
+  };
+  Measure measure() const {
+    Measure m;
+    for (int k = 0; k < model_.node_count(); ++k) {
+      const auto& c = state_.contact[static_cast<std::size_t>(k)];
+      const double v = node_residual(k, state_.x[static_cast<std::size_t>(k)], c);
+      m.contact_nodes += c.active() ? 1 : 0;
+      if (!(v <= m.max_residual)) m.max_residual = v, m.worst_node = k;  // NaN wins
+    }
+    return m;
+  }
+
+ private:
+  AxisMask lock(int k) const { return model_.locks[static_cast<std::size_t>(k)]; }
+
+  void relax_node(int k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (lock(k) == (kLockX | kLockY | kLockZ)) return;
+    NodeContact& contact = state_.contact[i];
+    const Eigen::Vector3d r = node_force(model_, state_.x, k);
+    if (contact.active() && remove_locked(r, lock(k)).dot(contact.normal) > 0.0)
+      contact = NodeContact{};  // R points out of the body: the node leaves it (§3.2.2)
+    const Eigen::Vector3d push =
+        unbalanced_force(r, lock(k), contact.active() ? &contact.normal : nullptr);
+    const double residual = push.norm();
+    if (!(residual > 0.0)) return;
+    const Eigen::Vector3d direction = push / residual;
+    const double first_step = first_step_length(k);
+    for (double step = first_step; step >= first_step * options_.min_step_fraction;
+         step /= options_.C) {
+      Candidate candidate = move(k, direction * step, contact);
+      if (node_residual(k, candidate.x, candidate.contact) < residual) {
+        state_.x[i] = candidate.x;
+        contact = candidate.contact;
+        return;
+      }
+    }
+  }
+
+  // ξ = Σ|d_k| / C (Eq. 4). With every spring at rest length ξ would be 0 although a
+  // constraint may still leave a force; the mean rest length / C is used then.
+  double first_step_length(int k) const {
+    const double deformation = deformation_sum(model_, state_.x, k);
+    if (deformation > 0.0) return deformation / options_.C;
+    double rest = 0.0;
+    int count = 0;
+    for (const int s : model_.grid.springs_at(k))
+      if (s >= 0) rest += model_.grid.springs()[static_cast<std::size_t>(s)].rest_length, ++count;
+    return rest / std::max(count, 1) / options_.C;
+  }
+
+  Candidate move(int k, const Eigen::Vector3d& step, const NodeContact& contact) const {
+    const Eigen::Vector3d& from = state_.x[static_cast<std::size_t>(k)];
+    const Eigen::Vector3d to = from + remove_locked(step, lock(k));
+    if (contact.active()) return slide(to, contact.body);
+    return fly(from, to);
+  }
+
+  // A contact node moved on the tangent plane is projected back onto the surface (Fig. 8).
+  Candidate slide(const Eigen::Vector3d& to, int body) const {
+    const SurfacePoint s = model_.bodies[static_cast<std::size_t>(body)].closest(to);
+    return {s.point, NodeContact{body, s.normal}};
+  }
+
+  // A free node moves straight; if the move enters a body, it stops on the surface there.
+  Candidate fly(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+    Candidate result{to, NodeContact{}};
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
+      const auto entry = model_.bodies[b].first_entry(from, to);
+      if (entry && (entry->point - from).norm() < nearest) {
+        nearest = (entry->point - from).norm();
+        result = {entry->point, NodeContact{static_cast<int>(b), entry->normal}};
+      }
+    }
+    return result;
+  }
+
+  const Model& model_;
+  SolverState& state_;
+  const RelaxOptions& options_;
+};
+
+std::string stop_message(const Summary& s) {
+  std::ostringstream text;
+  text.precision(3);
+  if (s.termination == Termination::converged)
+    text << "||V||inf = " << s.residual_N << " N <= e = " << s.tolerance_N << " N after "
+         << s.iterations << " iterations";
+  else if (s.termination == Termination::numerical_failure)
+    text << "non-finite residual at node " << s.worst_node << " in iteration " << s.iterations;
+  else
+    text << "iteration cap " << s.iterations << " reached with ||V||inf = " << s.residual_N
+         << " N > e = " << s.tolerance_N << " N (worst node " << s.worst_node << ")";
+  return text.str();
+}
+
+}  // namespace
+
+Summary relax(const Model& model, SolverState& state, const RelaxOptions& options,
+              const IterationObserver& observer) {
+  using Clock = std::chrono::steady_clock;
+  const auto started = Clock::now();
+  Relaxation relaxation(model, state, options);
+  Summary summary;
+  summary.solver = "relax";
+  summary.tolerance_N = options.tolerance_N;
+  for (int iteration = 0;; ++iteration) {
+    if (iteration > 0) relaxation.sweep();
+    const auto m = relaxation.measure();
+    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    const IterationRecord record{iteration, m.max_residual, seconds, m.contact_nodes};
+    summary.history.push_back(record);
+    if (observer) observer(record);
+    summary.iterations = iteration;
+    summary.residual_N = m.max_residual;
+    summary.worst_node = m.worst_node;
+    summary.seconds = seconds;
+    if (!std::isfinite(m.max_residual)) {
+      summary.termination = Termination::numerical_failure;
+      break;
+    }
+    if (m.max_residual <= options.tolerance_N) {
+      summary.termination = Termination::converged;
+      break;
+    }
+    if (iteration >= options.max_iterations) {
+      summary.termination = Termination::not_converged;
+      break;
+    }
+  }
+  summary.message = stop_message(summary);
+  return summary;
+}
+
+}  // namespace fabform
