@@ -12,7 +12,9 @@ void validate(const GridSpec& spec) {
     throw std::invalid_argument("fabric size must be positive and finite");
   if (spec.divisions_warp < 1 || spec.divisions_weft < 1)
     throw std::invalid_argument("fabric divisions must be at least 1");
-  if (static_cast<long long>(spec.divisions_warp + 1) * (spec.divisions_weft + 1) > 50'000'000LL)
+  if ((static_cast<long long>(spec.divisions_warp) + 1) *
+          (static_cast<long long>(spec.divisions_weft) + 1) >
+      50'000'000LL)
     throw std::invalid_argument("fabric has more than 50 million nodes");
 }
 

@@ -39,6 +39,10 @@ TriangleClosest closest_on_edges(const Eigen::Vector3d& p, const Eigen::Vector3d
 TriangleClosest closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                           const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  // A triangle flatter than an angle of 1e-12 rad has no usable face: its barycentric
+  // denominators below are rounding noise.
+  if (ab.cross(ac).squaredNorm() <= 1e-24 * ab.squaredNorm() * ac.squaredNorm())
+    return closest_on_edges(p, a, b, c);
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0.0 && d2 <= 0.0) return {a, TriangleFeature::vertex0};
   const Eigen::Vector3d bp = p - b;

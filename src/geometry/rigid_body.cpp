@@ -106,17 +106,23 @@ SurfacePoint RigidBody::surface_point_on(int triangle, const Eigen::Vector3d& p)
 }
 
 SurfacePoint RigidBody::closest(const Eigen::Vector3d& p) const {
+  if (auto found = closest_within(p, std::numeric_limits<double>::infinity())) return *found;
+  return surface_point_on(0, p);  // only if Embree found no candidate at all
+}
+
+std::optional<SurfacePoint> RigidBody::closest_within(const Eigen::Vector3d& p,
+                                                      double radius) const {
   SurfacePoint best;
   best.distance = std::numeric_limits<double>::infinity();
   // Float boxes may sit an ulp inside the double triangles: keep a margin so no candidate
   // that could be closest is culled.
   const double margin = 1e-6 * box_.diagonal() + 1e-12;
-  bvh_->visit_near(p, std::numeric_limits<double>::infinity(), [&](int triangle) {
+  bvh_->visit_near(p, radius + margin, [&](int triangle) {
     const SurfacePoint s = surface_point_on(triangle, p);
     if (s.distance < best.distance) best = s;
-    return best.distance + margin;
+    return std::min(radius, best.distance) + margin;
   });
-  if (best.triangle < 0) best = surface_point_on(0, p);  // only if Embree found nothing at all
+  if (best.triangle < 0 || best.distance > radius) return std::nullopt;
   return best;
 }
 

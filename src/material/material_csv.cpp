@@ -1,10 +1,10 @@
 #include "fabform/material/material_csv.hpp"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
+#include <regex>
 #include <stdexcept>
 
 #include "fabform/error.hpp"
@@ -33,13 +33,17 @@ std::optional<Cells> split_pair(const std::string& line) {
   return Cells{trim(line.substr(0, comma)), trim(line.substr(comma + 1))};
 }
 
+// The format's number grammar (materials/README.md): [+-]? (D+ ('.' D*)? | '.' D+) ([eE][+-]?D+)?
+// strtod alone would also take hex floats, "inf" and "nan".
+bool is_decimal_number(const std::string& cell) {
+  static const std::regex grammar(R"([+-]?([0-9]+(\.[0-9]*)?|\.[0-9]+)([eE][+-]?[0-9]+)?)");
+  return std::regex_match(cell, grammar);
+}
+
 std::optional<double> parse_number(const std::string& cell) {
-  if (cell.empty()) return std::nullopt;
-  errno = 0;
-  char* end = nullptr;
-  const double value = std::strtod(cell.c_str(), &end);
-  if (end != cell.c_str() + cell.size() || errno == ERANGE || !std::isfinite(value))
-    return std::nullopt;
+  if (!is_decimal_number(cell)) return std::nullopt;
+  const double value = std::strtod(cell.c_str(), nullptr);
+  if (!std::isfinite(value)) return std::nullopt;  // overflow; underflow to 0 is fine
   return value;
 }
 
@@ -73,6 +77,7 @@ class TableParser {
 
   void take_before_header(const Cells& cells) {
     if (cells.first == "thickness_m") {
+      if (thickness_m_) fail("thickness_m is given twice");
       const auto value = parse_number(cells.second);
       if (!value || *value <= 0.0) fail("thickness_m must be a positive number of metres");
       thickness_m_ = value;

@@ -54,7 +54,9 @@ double TensionTable::tension(double strain) const {
   if (tension_only_ && strain <= 0.0) return 0.0;
   const std::size_t k = segment_of(strain);
   const TablePoint& a = points_[k];
-  return a.tension_N_per_m + slope(strain) * (strain - a.strain);
+  const TablePoint& b = points_[k + 1];
+  return a.tension_N_per_m +
+         (b.tension_N_per_m - a.tension_N_per_m) * (strain - a.strain) / (b.strain - a.strain);
 }
 
 double TensionTable::slope(double strain) const {

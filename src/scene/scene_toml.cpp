@@ -12,24 +12,32 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kOverrideSource = "--set";
+const char* kOverrideSource = "command line --set";
 
-SourceLocation locate(const toml::node* node, const std::string& file, const std::string& key) {
-  if (!node) return {file, 0, key};
-  const auto& source = node->source();
-  if (source.path && *source.path == kOverrideSource) return {"command line --set", 0, key};
-  return {file, static_cast<int>(source.begin.line), key};
+// Dotted keys set on the command line; a value there, or inside one, is blamed on it.
+using OverriddenKeys = std::set<std::string>;
+
+bool is_overridden(const OverriddenKeys& overridden, const std::string& key) {
+  for (const auto& o : overridden)
+    if (key == o || key.rfind(o + ".", 0) == 0) return true;
+  return false;
 }
 
 // One TOML table being read: remembers which keys were used, so that what is left over can be
 // reported as unknown, and knows its dotted prefix and file for error messages.
 class TableReader {
  public:
-  TableReader(const toml::table* table, std::string prefix, std::string file)
-      : table_(table), prefix_(std::move(prefix)), file_(std::move(file)) {}
+  TableReader(const toml::table* table, std::string prefix, std::string file,
+              const OverriddenKeys& overridden)
+      : table_(table), prefix_(std::move(prefix)), file_(std::move(file)), overridden_(overridden) {}
+
+  SourceLocation locate(const toml::node* node, const std::string& key) const {
+    if (is_overridden(overridden_, key)) return {kOverrideSource, 0, key};
+    return {file_, node ? static_cast<int>(node->source().begin.line) : 0, key};
+  }
 
   [[noreturn]] void fail(const std::string& key, const std::string& message) const {
-    throw InputError(locate(node(key) ? node(key) : table_, file_, dotted(key)), message);
+    throw InputError(locate(node(key) ? node(key) : table_, dotted(key)), message);
   }
 
   std::string dotted(const std::string& key) const {
@@ -124,10 +132,10 @@ class TableReader {
     const toml::node* n = take(key);
     if (!n) {
       if (required) fail(key, "missing (a table is required)");
-      return TableReader(&empty_table(), dotted(key), file_);
+      return TableReader(&empty_table(), dotted(key), file_, overridden_);
     }
     if (!n->is_table()) fail(key, "must be a table");
-    return TableReader(n->as_table(), dotted(key), file_);
+    return TableReader(n->as_table(), dotted(key), file_, overridden_);
   }
 
   std::vector<TableReader> tables(const std::string& key) {
@@ -139,7 +147,7 @@ class TableReader {
     for (std::size_t i = 0; i < array->size(); ++i) {
       const toml::table* t = (*array)[i].as_table();
       if (!t) fail(key, "element " + std::to_string(i) + " must be a table");
-      readers.emplace_back(t, dotted(key) + "." + std::to_string(i), file_);
+      readers.emplace_back(t, dotted(key) + "." + std::to_string(i), file_, overridden_);
     }
     return readers;
   }
@@ -151,12 +159,12 @@ class TableReader {
       if (used_.count(name)) continue;
       std::string list;
       for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw InputError(locate(&value, file_, dotted(name)),
+      throw InputError(locate(&value, dotted(name)),
                        "unknown key" + (list.empty() ? std::string() : " (known here: " + list + ")"));
     }
   }
 
-  SourceLocation where() const { return locate(table_, file_, prefix_); }
+  SourceLocation where() const { return locate(table_, prefix_); }
   const std::string& file() const { return file_; }
 
  private:
@@ -169,6 +177,7 @@ class TableReader {
   const toml::table* table_;
   std::string prefix_;
   std::string file_;
+  const OverriddenKeys& overridden_;
   std::set<std::string> used_;
 };
 
@@ -299,10 +308,11 @@ void read_output(TableReader r, Scene* scene) {
   r.reject_unknown({"dir"});
 }
 
-Scene read_scene(const toml::table& root, const std::string& path) {
+Scene read_scene(const toml::table& root, const std::string& path,
+                 const OverriddenKeys& overridden) {
   Scene scene;
   scene.path = path;
-  TableReader r(&root, "", path);
+  TableReader r(&root, "", path, overridden);
   TableReader info = r.table("scene", false);
   scene.name = info.text("name", fs::path(path).stem().string());
   scene.description = info.text("description", "");
@@ -337,7 +347,7 @@ toml::table parse_override_value(const SceneOverride& o) {
   } catch (const toml::parse_error&) {
     std::string quoted = "'" + o.value + "'";
     if (o.value.find('\'') != std::string::npos || o.value.find('\n') != std::string::npos)
-      throw InputError({"command line --set", 0, o.key}, "value is neither TOML nor a plain string");
+      throw InputError({kOverrideSource, 0, o.key}, "value is neither TOML nor a plain string");
     return attempt(quoted);
   }
 }
@@ -345,7 +355,7 @@ toml::table parse_override_value(const SceneOverride& o) {
 void apply_override(toml::table& root, const SceneOverride& o) {
   const auto parts = split_key(o.key);
   const auto bad = [&](const std::string& why) {
-    return InputError({"command line --set", 0, o.key}, why);
+    return InputError({kOverrideSource, 0, o.key}, why);
   };
   for (const auto& p : parts)
     if (p.empty()) throw bad("empty part in the dotted key");
@@ -378,7 +388,7 @@ void apply_override(toml::table& root, const SceneOverride& o) {
 SceneOverride parse_override(const std::string& argument) {
   const auto equals = argument.find('=');
   if (equals == std::string::npos || equals == 0)
-    throw InputError({"command line --set", 0, argument}, "expected KEY=VALUE");
+    throw InputError({kOverrideSource, 0, argument}, "expected KEY=VALUE");
   return {argument.substr(0, equals), argument.substr(equals + 1)};
 }
 
@@ -392,8 +402,12 @@ Scene load_scene(const std::string& path, const std::vector<SceneOverride>& over
     throw InputError({path, static_cast<int>(error.source().begin.line), ""},
                      std::string(error.description()));
   }
-  for (const auto& o : overrides) apply_override(root, o);
-  return read_scene(root, path);
+  OverriddenKeys overridden;
+  for (const auto& o : overrides) {
+    apply_override(root, o);
+    overridden.insert(o.key);
+  }
+  return read_scene(root, path, overridden);
 }
 
 }  // namespace fabform

@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include "fabform/model/equilibrium.hpp"
@@ -57,7 +59,8 @@ class Relaxation {
       const auto& c = state_.contact[static_cast<std::size_t>(k)];
       const double v = node_residual(k, state_.x[static_cast<std::size_t>(k)], c);
       m.contact_nodes += c.active() ? 1 : 0;
-      if (!(v <= m.max_residual)) m.max_residual = v, m.worst_node = k;  // NaN wins
+      if (std::isnan(v)) return {v, k, m.contact_nodes};  // a broken node decides the run
+      if (v > m.max_residual || m.worst_node < 0) m.max_residual = v, m.worst_node = k;
     }
     return m;
   }
@@ -104,14 +107,17 @@ class Relaxation {
   Candidate move(int k, const Eigen::Vector3d& step, const NodeContact& contact) const {
     const Eigen::Vector3d& from = state_.x[static_cast<std::size_t>(k)];
     const Eigen::Vector3d to = from + remove_locked(step, lock(k));
-    if (contact.active()) return slide(to, contact.body);
+    if (contact.active()) return slide(to, (to - from).norm(), contact.body);
     return fly(from, to);
   }
 
   // A contact node moved on the tangent plane is projected back onto the surface (Fig. 8).
-  Candidate slide(const Eigen::Vector3d& to, int body) const {
-    const SurfacePoint s = model_.bodies[static_cast<std::size_t>(body)].closest(to);
-    return {s.point, NodeContact{body, s.normal}};
+  // The node was on the surface, so the surface is within the step's length of `to`.
+  Candidate slide(const Eigen::Vector3d& to, double step_length, int body) const {
+    const RigidBody& surface = model_.bodies[static_cast<std::size_t>(body)];
+    const auto s = surface.closest_within(to, 2.0 * step_length + 1e-6 * surface.box().diagonal());
+    const SurfacePoint projected = s ? *s : surface.closest(to);
+    return {projected.point, NodeContact{body, projected.normal}};
   }
 
   // A free node moves straight; if the move enters a body, it stops on the surface there.
@@ -119,13 +125,25 @@ class Relaxation {
     Candidate result{to, NodeContact{}};
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-      const auto entry = model_.bodies[b].first_entry(from, to);
+      const auto entry = entry_point(model_.bodies[b], from, to);
       if (entry && (entry->point - from).norm() < nearest) {
         nearest = (entry->point - from).norm();
         result = {entry->point, NodeContact{static_cast<int>(b), entry->normal}};
       }
     }
     return result;
+  }
+
+  // Embree's single-precision rays can slip through a shared edge (by ~1e-7 of the body's
+  // size); a move that ends just inside the body, no deeper than the move is long plus such a
+  // slip, entered it too and stops on the surface.
+  static std::optional<SurfacePoint> entry_point(const RigidBody& body, const Eigen::Vector3d& from,
+                                                 const Eigen::Vector3d& to) {
+    if (auto entry = body.first_entry(from, to)) return entry;
+    const double reach = (to - from).norm() + 1e-6 * body.box().diagonal();
+    const auto s = body.closest_within(to, reach);
+    if (s && s->signed_distance < 0.0) return s;
+    return std::nullopt;
   }
 
   const Model& model_;

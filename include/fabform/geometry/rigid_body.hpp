@@ -36,6 +36,8 @@ class RigidBody {
 
   /// Closest surface point to p (BVH candidates, exact double distances).
   SurfacePoint closest(const Eigen::Vector3d& p) const;
+  /// The same, when the surface lies within `radius` of p; a small radius makes it cheap.
+  std::optional<SurfacePoint> closest_within(const Eigen::Vector3d& p, double radius) const;
 
   /// Where the straight move from → to first enters the body through its outside, if it does.
   /// Crossings of the inside of a face (leaving the body) are not entries.

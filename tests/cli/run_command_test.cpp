@@ -1,0 +1,157 @@
+// The command-line contract of DESIGN.md, exercised on the real binary: exit statuses, one-line
+// errors that name the file, and output folders that are complete or untouched.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "support/shapes.hpp"
+#include "support/temp_dir.hpp"
+#include "test_paths.hpp"
+
+namespace fabform {
+namespace {
+
+struct Outcome {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Outcome fabform(const test::TempDir& dir, const std::string& arguments) {
+  const std::string command = "cd '" + dir.root().string() + "' && '" + test::fabform_binary() +
+                              "' " + arguments + " >stdout.txt 2>stderr.txt";
+  const int raw = std::system(command.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir.path("stdout.txt")),
+          slurp(dir.path("stderr.txt"))};
+}
+
+int line_count(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+// A small scene whose answer takes a moment: a clamped, pre-lifted square over a sphere.
+class RunCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir.write("table.csv", "# linear test table\nstrain,tension_N_per_m\n0,0\n1,500\n");
+    std::ostringstream obj;
+    const TriangleMesh sphere = test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40);
+    for (const auto& v : sphere.vertices) obj << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+    for (const auto& t : sphere.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    dir.write("sphere.obj", obj.str());
+    dir.write("scene.toml",
+              "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [10, 10]\n"
+              "warp = \"table.csv\"\nweft = \"table.csv\"\n"
+              "[[body]]\nmesh = \"sphere.obj\"\nunits = \"m\"\n"
+              "[[constraint]]\nnodes = \"perimeter\"\n"
+              "[initial]\nshape = \"lift\"\nheight_m = 0.02\n"
+              "[solver]\ntolerance_N = 1e-5\n");
+  }
+  bool exists(const std::string& name) const { return std::filesystem::exists(dir.path(name)); }
+  test::TempDir dir;
+};
+
+TEST_F(RunCommand, ConvergedRunWritesEveryResult) {
+  const Outcome o = fabform(dir, "run scene.toml --out out");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.err.find("results in out"), std::string::npos) << o.err;
+  const std::string json = slurp(dir.path("out/result.json"));
+  for (const char* key : {"\"converged\": true", "\"termination\": \"converged\"", "\"iterations\"",
+                          "\"residual_N\"", "\"wall_seconds\"", "\"solver\": \"relax\"",
+                          "\"nodes\": 121", "\"contact_nodes\"", "\"max_penetration_m\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key << " missing from\n" << json;
+  const std::string csv = slurp(dir.path("out/convergence.csv"));
+  EXPECT_EQ(csv.rfind("iteration,residual_N,seconds", 0), 0u) << csv.substr(0, 80);
+  EXPECT_GT(line_count(csv), 2);
+  EXPECT_EQ(line_count(slurp(dir.path("out/fabric.obj"))), 1 + 121 + 100);
+  const std::string vtk = slurp(dir.path("out/fabric.vtk"));
+  for (const char* field : {"strain_warp", "strain_weft", "contact", "residual_N", "POINT_DATA 121"})
+    EXPECT_NE(vtk.find(field), std::string::npos) << field;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path("out")))
+    EXPECT_NE(entry.path().extension(), ".tmp") << "left a temporary file: " << entry.path();
+}
+
+TEST_F(RunCommand, IterationCapExitsThreeAndSaysSo) {
+  const Outcome o = fabform(dir, "run scene.toml --out out --max-iter 2 --tol 1e-9");
+  EXPECT_EQ(o.status, 3) << o.err;
+  const std::string json = slurp(dir.path("out/result.json"));
+  EXPECT_NE(json.find("\"converged\": false"), std::string::npos);
+  EXPECT_NE(json.find("\"termination\": \"not converged\""), std::string::npos);
+  EXPECT_EQ(line_count(slurp(dir.path("out/convergence.csv"))), 1 + 3);
+}
+
+TEST_F(RunCommand, SetOverridesAnySceneValue) {
+  const Outcome o = fabform(dir, "run scene.toml --out out --set fabric.divisions=[6,6]");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(slurp(dir.path("out/result.json")).find("\"nodes\": 49"), std::string::npos);
+}
+
+// Bad input: exit status 2, one line naming the file (and line), nothing written.
+struct BadRun {
+  const char* name;
+  const char* arguments;
+  const char* file_to_write;  // "" for none
+  const char* content;
+  const char* expected_in_message;
+};
+
+class RunCommandBadInput : public RunCommand, public ::testing::WithParamInterface<BadRun> {};
+
+TEST_P(RunCommandBadInput, ExitsTwoWithOneLineAndWritesNothing) {
+  const BadRun& bad = GetParam();
+  if (std::string(bad.file_to_write).size() > 0) dir.write(bad.file_to_write, bad.content);
+  const Outcome o = fabform(dir, bad.arguments);
+  EXPECT_EQ(o.status, 2) << o.err;
+  EXPECT_EQ(line_count(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find(bad.expected_in_message), std::string::npos) << o.err;
+  EXPECT_FALSE(exists("out")) << "an output folder was created for bad input";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Contract, RunCommandBadInput,
+    ::testing::Values(
+        BadRun{"MissingScene", "run nowhere.toml --out out", "", "", "nowhere.toml: no such scene file"},
+        BadRun{"DecreasingTable", "run scene.toml --out out", "table.csv",
+               "strain,tension_N_per_m\n0,0\n0.5,10\n0.4,20\n", "table.csv:4:"},
+        BadRun{"EmptyMesh", "run scene.toml --out out", "sphere.obj", "", "sphere.obj"},
+        BadRun{"UnknownKey", "run scene.toml --out out --set solver.speed=3", "", "", "solver.speed: unknown key"},
+        BadRun{"BadTolerance", "run scene.toml --out out --tol fast", "", "", "solver.tolerance_N"},
+        BadRun{"UnknownOption", "run scene.toml --out out --fast", "", "", "--fast: unknown option"},
+        BadRun{"MissingValue", "run scene.toml --out", "", "", "--out: needs a value"},
+        BadRun{"StartsInside", "run scene.toml --out out --set initial.height_m=0.005", "", "",
+               "starts inside body"}),
+    [](const auto& case_info) { return std::string(case_info.param.name); });
+
+TEST_F(RunCommand, BadInputLeavesAnExistingFolderUntouched) {
+  ASSERT_EQ(fabform(dir, "run scene.toml --out out").status, 0);
+  const std::string before = slurp(dir.path("out/result.json"));
+  dir.write("table.csv", "strain,tension_N_per_m\n0,0\n");
+  EXPECT_EQ(fabform(dir, "run scene.toml --out out").status, 2);
+  EXPECT_EQ(slurp(dir.path("out/result.json")), before);
+}
+
+TEST(Cli, SolversListsRelax) {
+  test::TempDir dir;
+  const Outcome o = fabform(dir, "solvers");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_EQ(o.out, "relax\n");
+}
+
+TEST(Cli, UnknownCommandIsAUsageError) {
+  test::TempDir dir;
+  EXPECT_EQ(fabform(dir, "frobnicate").status, 2);
+  EXPECT_EQ(fabform(dir, "").status, 2);
+}
+
+}  // namespace
+}  // namespace fabform

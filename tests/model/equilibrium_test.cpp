@@ -1,0 +1,75 @@
+// Seed 003's residual V (§3.3) and its recomputation from positions alone.
+#include "fabform/model/equilibrium.hpp"
+
+#include <gtest/gtest.h>
+
+#include "fabform/model/stretch_forces.hpp"
+#include "support/shapes.hpp"
+
+namespace fabform {
+namespace {
+
+TEST(UnbalancedForce, FreeNodeKeepsAllOfR) {
+  const Eigen::Vector3d r(1.0, -2.0, 3.0);
+  EXPECT_EQ(unbalanced_force(r, 0, nullptr), r);
+}
+
+TEST(UnbalancedForce, LockedAxesCarryNoResidual) {
+  const Eigen::Vector3d r(1.0, -2.0, 3.0);
+  EXPECT_EQ(unbalanced_force(r, kLockX | kLockZ, nullptr), Eigen::Vector3d(0.0, -2.0, 0.0));
+  EXPECT_EQ(unbalanced_force(r, kLockX | kLockY | kLockZ, nullptr), Eigen::Vector3d::Zero());
+}
+
+TEST(UnbalancedForce, ContactPressingInLeavesTheTangentialPart) {
+  const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+  EXPECT_EQ(unbalanced_force({0.5, 0.25, -4.0}, 0, &n), Eigen::Vector3d(0.5, 0.25, 0.0));
+}
+
+TEST(UnbalancedForce, ContactPullingOutKeepsAllOfR) {
+  const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+  EXPECT_EQ(unbalanced_force({0.5, 0.25, 4.0}, 0, &n), Eigen::Vector3d(0.5, 0.25, 4.0));
+}
+
+// A 3 × 3 node patch whose centre node sits at height z over a sphere whose top is at z = 0
+// below it; the other nodes sit 0.5 mm lower, so the springs pull the centre down.
+Model two_by_two_over_sphere(double z) {
+  FabricGrid grid({0.02, 0.02, 2, 2});
+  std::vector<Eigen::Vector3d> x(9);
+  for (int k = 0; k < 9; ++k) x[static_cast<std::size_t>(k)] = grid.rest_position(k) - Eigen::Vector3d(0, 0, 5e-4);
+  x[4].z() = z;
+  const TensionTable table({{0.0, 0.0}, {1.0, 100.0}});
+  Model model{grid, table, table, std::vector<AxisMask>(9, 0), {}, x};
+  model.bodies.emplace_back("sphere", test::uv_sphere({0.01, 0.01, -0.05}, 0.05, 60, 120));
+  return model;
+}
+
+// The centre node sits on the sphere's top with the four springs pulling it down: in contact,
+// its residual is the tangential part only, which vanishes by symmetry; free, it would be |R|.
+TEST(MeasureEquilibrium, ContactNodeOnTopOfSphere) {
+  const Model model = two_by_two_over_sphere(0.0);
+  const EquilibriumReport report = measure_equilibrium(model, model.start, 1e-9);
+  EXPECT_EQ(report.contact[4], 1);
+  EXPECT_EQ(report.contact_nodes, 1);
+  EXPECT_GT(unbalanced_force(node_force(model, model.start, 4), 0, nullptr).norm(), 1e-5);
+  // Symmetric springs: the tangential force cancels to rounding (forces are ~1 N).
+  EXPECT_NEAR(report.residual_N[4], 0.0, 1e-12);
+  EXPECT_EQ(report.max_penetration_m, 0.0);
+}
+
+TEST(MeasureEquilibrium, NodeInsideIsReportedAsPenetration) {
+  const Model model = two_by_two_over_sphere(-0.001);
+  const EquilibriumReport report = measure_equilibrium(model, model.start, 1e-9);
+  // The sphere is tessellated, so the depth is 1 mm less at most the facets' sag (< 0.1 mm).
+  EXPECT_NEAR(report.max_penetration_m, 0.001, 1e-4);
+}
+
+TEST(MeasureEquilibrium, NonFiniteNodeGivesNaN) {
+  Model model = two_by_two_over_sphere(0.0);
+  model.start[3].x() = std::numeric_limits<double>::infinity();
+  const EquilibriumReport report = measure_equilibrium(model, model.start, 1e-9);
+  EXPECT_TRUE(std::isnan(report.max_residual_N));
+  EXPECT_EQ(report.worst_node, 3);
+}
+
+}  // namespace
+}  // namespace fabform

@@ -1,0 +1,105 @@
+// From a scene to a model: the files it names are read, and what cannot be used is reported
+// with the file and line to fix.
+#include "fabform/scene/model_builder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "fabform/scene/scene_toml.hpp"
+#include "support/shapes.hpp"
+#include "support/temp_dir.hpp"
+
+namespace fabform {
+namespace {
+
+std::string to_obj(const TriangleMesh& mesh) {
+  std::ostringstream out;
+  out.precision(17);
+  for (const auto& v : mesh.vertices) out << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
+  for (const auto& t : mesh.triangles) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+  return out.str();
+}
+
+// A 10 × 10 cm fabric lifted 2 cm over a 3 cm sphere whose top reaches 1 cm.
+class ModelBuilder : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir.write("table.csv", "strain,tension_N_per_m\n0,0\n1,500\n");
+    dir.write("sphere.obj", to_obj(test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40)));
+  }
+  std::string scene(const std::string& extra, const std::string& lift = "0.02") const {
+    return "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [10, 10]\n"
+           "warp = \"table.csv\"\nweft = \"table.csv\"\n"
+           "[[body]]\nmesh = \"sphere.obj\"\nunits = \"m\"\n"
+           "[initial]\nshape = \"lift\"\nheight_m = " + lift + "\n" + extra;
+  }
+  Model build(const std::string& text) const {
+    return build_model(load_scene(dir.write("scene.toml", text)));
+  }
+  InputError error(const std::string& text) const {
+    try {
+      build(text);
+    } catch (const InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "no error";
+    return InputError({}, "");
+  }
+  test::TempDir dir;
+};
+
+TEST_F(ModelBuilder, BuildsLocksBodiesAndStart) {
+  const Model model = build(scene("[[constraint]]\nnodes = \"perimeter\"\n[[constraint]]\nnode = [5, 5]\naxes = \"z\"\n"));
+  EXPECT_EQ(model.node_count(), 121);
+  EXPECT_EQ(model.bodies.size(), 1u);
+  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.grid.node(0, 3))], kLockX | kLockY | kLockZ);
+  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.grid.node(5, 5))], kLockZ);
+  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.grid.node(4, 5))], 0);
+  EXPECT_DOUBLE_EQ(model.start[static_cast<std::size_t>(model.grid.node(5, 5))].z(), 0.02);
+}
+
+TEST_F(ModelBuilder, NodeSetThatSelectsNothing) {
+  const InputError e = error(scene("[[constraint]]\nbox_m = [[0.2, 0.2], [0.3, 0.3]]\n"));
+  EXPECT_EQ(e.where().line, 12);
+  EXPECT_NE(std::string(e.what()).find("selects no node"), std::string::npos) << e.what();
+  const InputError index = error(scene("[[constraint]]\nnode = [11, 0]\n"));
+  EXPECT_NE(std::string(index.what()).find("selects no node"), std::string::npos) << index.what();
+}
+
+TEST_F(ModelBuilder, FabricStartingInsideTheBody) {
+  const InputError e = error(scene("", "0.005"));
+  EXPECT_NE(std::string(e.what()).find("inside body"), std::string::npos) << e.what();
+  EXPECT_EQ(e.where().key, "initial");
+}
+
+TEST_F(ModelBuilder, SpringThroughTheBody) {
+  // Nodes clear of a thin sphere but a spring crossing it: a 1 mm sphere between two nodes.
+  dir.write("sphere.obj", to_obj(test::uv_sphere({0.025, 0.05, 0.0}, 0.001, 8, 16)));
+  std::string text = scene("");
+  text.replace(text.find("shape = \"lift\""), 14, "shape = \"flat\"");
+  const InputError e = error(text);
+  EXPECT_NE(std::string(e.what()).find("passes through body"), std::string::npos) << e.what();
+}
+
+TEST_F(ModelBuilder, DecreasingTableNamesFileAndLine) {
+  const std::string table = dir.write("table.csv", "strain,tension_N_per_m\n0,0\n0.5,10\n0.4,20\n");
+  const InputError e = error(scene(""));
+  EXPECT_EQ(e.where().file, table);
+  EXPECT_EQ(e.where().line, 4);
+}
+
+TEST_F(ModelBuilder, MeshWithoutTrianglesNamesTheMesh) {
+  const std::string mesh = dir.write("sphere.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  const InputError e = error(scene(""));
+  EXPECT_EQ(e.where().file, mesh);
+}
+
+TEST_F(ModelBuilder, MissingMaterialFile) {
+  std::filesystem::remove(dir.path("table.csv"));
+  const InputError e = error(scene(""));
+  EXPECT_EQ(e.where().file, dir.path("table.csv"));
+}
+
+}  // namespace
+}  // namespace fabform

@@ -1,0 +1,177 @@
+// Scene files: what they mean once read, and how a bad one is reported (file, line, key).
+#include "fabform/scene/scene_toml.hpp"
+
+#include <gtest/gtest.h>
+
+#include "support/temp_dir.hpp"
+#include "test_paths.hpp"
+
+namespace fabform {
+namespace {
+
+// A minimal valid scene; tests append or replace lines to break it.
+const char* kMinimal =
+    "[fabric]\n"                          // line 1
+    "size_m = [0.1, 0.2]\n"               // line 2
+    "divisions = [4, 8]\n"                // line 3
+    "warp = \"warp.csv\"\n"               // line 4
+    "weft = \"weft.csv\"\n"               // line 5
+    "[[constraint]]\n"                    // line 6
+    "nodes = \"perimeter\"\n"             // line 7
+    "[solver]\n"                          // line 8
+    "tolerance_N = 1e-3\n";               // line 9
+
+InputError load_error(const std::string& text, const std::vector<SceneOverride>& overrides = {}) {
+  test::TempDir dir;
+  const std::string path = dir.write("scene.toml", text);
+  try {
+    load_scene(path, overrides);
+  } catch (const InputError& error) {
+    return error;
+  }
+  ADD_FAILURE() << "no error for:\n" << text;
+  return InputError({}, "");
+}
+
+TEST(LoadScene, ReadsValuesInSIAndResolvesPaths) {
+  test::TempDir dir;
+  const std::string path = dir.write("scene.toml", kMinimal);
+  const Scene scene = load_scene(path);
+  EXPECT_EQ(scene.name, "scene");
+  EXPECT_EQ(scene.grid.width_m, 0.1);
+  EXPECT_EQ(scene.grid.divisions_weft, 8);
+  EXPECT_EQ(scene.warp_path, dir.path("warp.csv"));
+  ASSERT_EQ(scene.constraints.size(), 1u);
+  EXPECT_EQ(scene.constraints[0].axes, kLockX | kLockY | kLockZ);
+  EXPECT_EQ(scene.solver.relax.tolerance_N, 1e-3);
+  EXPECT_EQ(scene.solver.name, "relax");
+  EXPECT_EQ(scene.initial.kind, InitialShape::Kind::flat);
+}
+
+TEST(LoadScene, ShippedScenesLoad) {
+  for (const char* file : {"scenes/mold.toml", "scenes/torso.toml"}) {
+    const Scene scene = load_scene(test::source_path(file));
+    EXPECT_FALSE(scene.bodies.empty()) << file;
+    EXPECT_FALSE(scene.constraints.empty()) << file;
+  }
+}
+
+TEST(LoadScene, UnknownKeyNamesFileLineAndKey) {
+  const InputError e = load_error(std::string(kMinimal) + "toleranse = 3\n");
+  EXPECT_EQ(e.where().line, 10);
+  EXPECT_EQ(e.where().key, "solver.toleranse");
+  EXPECT_NE(std::string(e.what()).find("scene.toml:10: solver.toleranse: unknown key"), std::string::npos)
+      << e.what();
+}
+
+TEST(LoadScene, UnknownTopLevelTable) {
+  const InputError e = load_error(std::string(kMinimal) + "[gravity]\ng = 9.81\n");
+  EXPECT_EQ(e.where().key, "gravity");
+  EXPECT_EQ(e.where().line, 10);
+}
+
+TEST(LoadScene, TomlSyntaxErrorNamesTheLine) {
+  const InputError e = load_error(std::string(kMinimal) + "max_iterations = = 3\n");
+  EXPECT_EQ(e.where().line, 10);
+}
+
+TEST(LoadScene, MissingFile) {
+  try {
+    load_scene("/nonexistent/scene.toml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().file, "/nonexistent/scene.toml");
+  }
+}
+
+// Each bad value: the replacement line, the key the message must name, and its line.
+struct BadValue {
+  const char* from;
+  const char* to;
+  const char* key;
+  int line;
+};
+
+class LoadSceneBadValue : public ::testing::TestWithParam<BadValue> {};
+
+TEST_P(LoadSceneBadValue, NamesTheKeyAndLine) {
+  std::string text = kMinimal;
+  const BadValue& bad = GetParam();
+  text.replace(text.find(bad.from), std::string(bad.from).size(), bad.to);
+  const InputError e = load_error(text);
+  EXPECT_EQ(e.where().key, bad.key) << e.what();
+  EXPECT_EQ(e.where().line, bad.line) << e.what();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Sweep, LoadSceneBadValue,
+    ::testing::Values(BadValue{"size_m = [0.1, 0.2]", "size_m = [0.1, -0.2]", "fabric.size_m", 2},
+                      BadValue{"size_m = [0.1, 0.2]", "size_m = [0.1, nan]", "fabric.size_m", 2},
+                      BadValue{"size_m = [0.1, 0.2]", "size_m = \"big\"", "fabric.size_m", 2},
+                      BadValue{"size_m = [0.1, 0.2]", "size_m = [0.1]", "fabric.size_m", 2},
+                      BadValue{"divisions = [4, 8]", "divisions = [0, 8]", "fabric.divisions", 3},
+                      BadValue{"divisions = [4, 8]", "divisions = [4.5, 8]", "fabric.divisions", 3},
+                      BadValue{"divisions = [4, 8]", "divisions = [100000, 100000]", "fabric.divisions", 3},
+                      BadValue{"warp = \"warp.csv\"", "warp = 3", "fabric.warp", 4},
+                      BadValue{"nodes = \"perimeter\"", "nodes = \"rim\"", "constraint.0.nodes", 7},
+                      BadValue{"nodes = \"perimeter\"", "nodes = \"perimeter\"\naxes = \"xx\"",
+                               "constraint.0.axes", 8},
+                      BadValue{"tolerance_N = 1e-3", "tolerance_N = -1", "solver.tolerance_N", 9},
+                      BadValue{"tolerance_N = 1e-3", "tolerance_N = inf", "solver.tolerance_N", 9},
+                      BadValue{"tolerance_N = 1e-3", "C = 1.0", "solver.C", 9},
+                      BadValue{"tolerance_N = 1e-3", "name = \"newton\"", "solver.name", 9},
+                      BadValue{"tolerance_N = 1e-3", "max_iterations = -5", "solver.max_iterations", 9},
+                      BadValue{"tolerance_N = 1e-3", "threads = 0", "solver.threads", 9}));
+
+TEST(LoadScene, MissingRequiredKeyNamesIt) {
+  std::string text = kMinimal;
+  text.replace(text.find("weft = \"weft.csv\"\n"), 18, "");
+  const InputError e = load_error(text);
+  EXPECT_EQ(e.where().key, "fabric.weft");
+  EXPECT_NE(std::string(e.what()).find("missing"), std::string::npos);
+}
+
+TEST(LoadScene, BodyNeedsItsUnits) {
+  const InputError e = load_error(std::string(kMinimal) + "[[body]]\nmesh = \"m.stl\"\nunits = \"furlong\"\n");
+  EXPECT_EQ(e.where().key, "body.0.units");
+  EXPECT_EQ(e.where().line, 12);
+}
+
+TEST(LoadScene, InitialShapeNeedsItsParameters) {
+  const InputError e = load_error(std::string(kMinimal) + "[initial]\nshape = \"wrap\"\nradius_m = 0.2\n");
+  EXPECT_EQ(e.where().key, "initial.axis_m");
+}
+
+TEST(LoadScene, OverridesReplaceValuesByDottedKey) {
+  test::TempDir dir;
+  const std::string path = dir.write("scene.toml", kMinimal);
+  const Scene scene = load_scene(path, {{"solver.tolerance_N", "2.5e-4"},
+                                        {"fabric.divisions", "[10, 20]"},
+                                        {"constraint.0.axes", "xy"},
+                                        {"fabric.warp", "other.csv"}});
+  EXPECT_EQ(scene.solver.relax.tolerance_N, 2.5e-4);
+  EXPECT_EQ(scene.grid.divisions_warp, 10);
+  EXPECT_EQ(scene.constraints[0].axes, kLockX | kLockY);
+  EXPECT_EQ(scene.warp_path, dir.path("other.csv"));
+}
+
+TEST(LoadScene, BadOverrideIsBlamedOnTheCommandLine) {
+  const InputError e = load_error(kMinimal, {{"solver.tolerance_N", "fast"}});
+  EXPECT_EQ(e.where().file, "command line --set");
+  EXPECT_EQ(e.where().key, "solver.tolerance_N");
+  const InputError unknown = load_error(kMinimal, {{"solver.speed", "3"}});
+  EXPECT_EQ(unknown.where().key, "solver.speed");
+  const InputError index = load_error(kMinimal, {{"constraint.5.axes", "x"}});
+  EXPECT_EQ(index.where().key, "constraint.5.axes");
+}
+
+TEST(ParseOverride, SplitsAtTheFirstEquals) {
+  const SceneOverride o = parse_override("fabric.warp=a=b.csv");
+  EXPECT_EQ(o.key, "fabric.warp");
+  EXPECT_EQ(o.value, "a=b.csv");
+  EXPECT_THROW(parse_override("fabric.warp"), InputError);
+  EXPECT_THROW(parse_override("=3"), InputError);
+}
+
+}  // namespace
+}  // namespace fabform

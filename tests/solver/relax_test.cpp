@@ -1,0 +1,172 @@
+// The seed 003 relaxation on small problems with known answers.
+#include "fabform/solver/relax.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fabform/model/equilibrium.hpp"
+#include "support/shapes.hpp"
+
+namespace fabform {
+namespace {
+
+TensionTable linear_table(double stiffness_N_per_m) {
+  return TensionTable({{0.0, 0.0}, {1.0, stiffness_N_per_m}}, "linear");
+}
+
+// A 10 × 10 cm fabric with the given divisions, perimeter locked in every axis, stretched in
+// its plane by `prestretch` (a clamped membrane needs tension to resist moving out of plane).
+Model clamped_fabric(int divisions, double prestretch = 0.0) {
+  FabricGrid grid({0.1, 0.1, divisions, divisions});
+  std::vector<AxisMask> locks(static_cast<std::size_t>(grid.node_count()), 0);
+  std::vector<Eigen::Vector3d> x(static_cast<std::size_t>(grid.node_count()));
+  const Eigen::Vector3d centre(0.05, 0.05, 0.0);
+  for (int k = 0; k < grid.node_count(); ++k) {
+    x[static_cast<std::size_t>(k)] = centre + (1.0 + prestretch) * (grid.rest_position(k) - centre);
+    if (grid.on_perimeter(k)) locks[static_cast<std::size_t>(k)] = kLockX | kLockY | kLockZ;
+  }
+  return Model{grid, linear_table(500.0), linear_table(500.0), locks, {}, x};
+}
+
+void lift_interior(Model& model, double height) {
+  for (int k = 0; k < model.node_count(); ++k)
+    if (!model.grid.on_perimeter(k)) model.start[static_cast<std::size_t>(k)].z() = height;
+}
+
+TEST(RelaxOptions, RejectsBadValues) {
+  RelaxOptions o;
+  EXPECT_EQ(o.invalid_reason(), "");
+  o.C = 1.0;
+  EXPECT_NE(o.invalid_reason(), "");
+  o = RelaxOptions{};
+  o.tolerance_N = std::nan("");
+  EXPECT_NE(o.invalid_reason(), "");
+  o = RelaxOptions{};
+  o.max_iterations = -1;
+  EXPECT_NE(o.invalid_reason(), "");
+}
+
+// With no body, a pre-stretched clamped fabric lifted in the middle relaxes back to flat: every
+// node returns to z = 0 and the residual recomputed from positions meets the tolerance.
+TEST(Relax, LiftedFabricRelaxesToFlatWithoutBody) {
+  Model model = clamped_fabric(10, 0.05);
+  lift_interior(model, 0.01);
+  SolverState state = SolverState::at_start(model);
+  RelaxOptions options;
+  options.tolerance_N = 1e-8;
+  const Summary summary = relax(model, state, options);
+  ASSERT_EQ(summary.termination, Termination::converged) << summary.message;
+  const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-9);
+  EXPECT_LE(check.max_residual_N, options.tolerance_N);
+  // The out-of-plane stiffness of a node is about 4 T w / l = 4 · 25 N/m · 1 cm / 1 cm = 100 N/m,
+  // so a residual of 1e-8 N leaves heights within ~1e-10 m; 1e-8 m is a safe bound.
+  for (const auto& x : state.x) EXPECT_NEAR(x.z(), 0.0, 1e-8);
+}
+
+// A pre-stretched square membrane over a sphere rises onto it: nodes touch, none enters it,
+// and the residual recomputed independently meets the tolerance.
+TEST(Relax, PrestretchedFabricOverSphereRestsOnIt) {
+  Model model = clamped_fabric(20, 0.1);
+  lift_interior(model, 0.02);  // clear of the sphere, whose top is at z = 0.01
+  model.bodies.emplace_back("sphere", test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 40, 80));
+  SolverState state = SolverState::at_start(model);
+  RelaxOptions options;
+  options.tolerance_N = 1e-6;
+  const Summary summary = relax(model, state, options);
+  ASSERT_EQ(summary.termination, Termination::converged) << summary.message;
+  const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-8);
+  EXPECT_LE(check.max_residual_N, options.tolerance_N);
+  EXPECT_GT(check.contact_nodes, 10);
+  // Contact is resolved on the tessellated sphere; 1e-9 m is far below its facets' size.
+  EXPECT_LE(check.max_penetration_m, 1e-9);
+  // The apex of the sphere sits 1 cm above the perimeter plane: the fabric's centre is on it.
+  const Eigen::Vector3d centre = state.x[static_cast<std::size_t>(model.grid.node(10, 10))];
+  EXPECT_NEAR(centre.z(), 0.01, 1e-4);
+}
+
+// Seed 003, §3.2.3: a node locked on an axis never moves along it.
+TEST(Relax, LockedAxesDoNotMove) {
+  Model model = clamped_fabric(8, 0.05);
+  for (int k = 0; k < model.node_count(); ++k) {
+    auto& x = model.start[static_cast<std::size_t>(k)];
+    if (!model.grid.on_perimeter(k)) x += Eigen::Vector3d(0.003, -0.002, 0.01);
+  }
+  const int locked_z = model.grid.node(4, 4), locked_xy = model.grid.node(2, 5);
+  model.locks[static_cast<std::size_t>(locked_z)] = kLockZ;
+  model.locks[static_cast<std::size_t>(locked_xy)] = kLockX | kLockY;
+  SolverState state = SolverState::at_start(model);
+  RelaxOptions options;
+  options.tolerance_N = 1e-7;
+  const Summary summary = relax(model, state, options);
+  ASSERT_TRUE(summary.converged()) << summary.message;
+  EXPECT_EQ(state.x[static_cast<std::size_t>(locked_z)].z(),
+            model.start[static_cast<std::size_t>(locked_z)].z());
+  EXPECT_EQ(state.x[static_cast<std::size_t>(locked_xy)].head<2>(),
+            model.start[static_cast<std::size_t>(locked_xy)].head<2>());
+  EXPECT_NE(state.x[static_cast<std::size_t>(locked_z)].head<2>(),
+            model.start[static_cast<std::size_t>(locked_z)].head<2>());
+  for (int k = 0; k < model.node_count(); ++k) {
+    if (model.grid.on_perimeter(k)) {
+      EXPECT_EQ(state.x[static_cast<std::size_t>(k)], model.start[static_cast<std::size_t>(k)]);
+    }
+  }
+}
+
+TEST(Relax, StopsAtItsCapWithAHistory) {
+  Model model = clamped_fabric(10, 0.05);
+  lift_interior(model, 0.02);
+  SolverState state = SolverState::at_start(model);
+  RelaxOptions options;
+  options.tolerance_N = 1e-12;
+  options.max_iterations = 5;
+  int observed = 0;
+  const Summary summary = relax(model, state, options, [&](const IterationRecord&) { ++observed; });
+  EXPECT_EQ(summary.termination, Termination::not_converged);
+  EXPECT_EQ(to_string(summary.termination), "not converged");
+  EXPECT_EQ(summary.iterations, 5);
+  ASSERT_EQ(summary.history.size(), 6u);  // the start and five sweeps
+  EXPECT_EQ(observed, 6);
+  EXPECT_LT(summary.history.back().residual_N, summary.history.front().residual_N);
+  for (std::size_t i = 1; i < summary.history.size(); ++i)
+    EXPECT_GE(summary.history[i].seconds, summary.history[i - 1].seconds);
+}
+
+TEST(Relax, AlreadyInEquilibriumStopsAtIterationZero) {
+  Model model = clamped_fabric(4);
+  SolverState state = SolverState::at_start(model);
+  const Summary summary = relax(model, state, RelaxOptions{});
+  EXPECT_TRUE(summary.converged());
+  EXPECT_EQ(summary.iterations, 0);
+  EXPECT_LE(summary.residual_N, 1e-12);  // rounding of forces of about 1 N
+}
+
+TEST(Relax, NonFiniteStateIsANumericalFailure) {
+  Model model = clamped_fabric(4);
+  model.start[static_cast<std::size_t>(model.grid.node(2, 2))].z() = std::nan("");
+  SolverState state = SolverState::at_start(model);
+  const Summary summary = relax(model, state, RelaxOptions{});
+  EXPECT_EQ(summary.termination, Termination::numerical_failure);
+  EXPECT_EQ(to_string(summary.termination), "numerical failure");
+}
+
+// Every C > 1 relaxes; a C near 1 divides the step slowly but must still converge.
+class RelaxC : public ::testing::TestWithParam<double> {};
+
+TEST_P(RelaxC, Converges) {
+  Model model = clamped_fabric(6, 0.05);
+  lift_interior(model, 0.01);
+  SolverState state = SolverState::at_start(model);
+  RelaxOptions options;
+  options.C = GetParam();
+  options.tolerance_N = 1e-6;
+  options.max_iterations = 200000;
+  const Summary summary = relax(model, state, options);
+  EXPECT_TRUE(summary.converged()) << "C = " << GetParam() << ": " << summary.message;
+  EXPECT_LE(measure_equilibrium(model, state.x, 1e-9).max_residual_N, 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(SeedConstant, RelaxC, ::testing::Values(1.01, 1.5, 2.0, 10.0, 100.0));
+
+}  // namespace
+}  // namespace fabform

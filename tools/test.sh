@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Quick start, the other command: set up, build, and run the whole test suite.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+tools/setup.sh
+cd build && ctest --output-on-failure -j"$(nproc)"
