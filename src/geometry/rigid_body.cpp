@@ -114,9 +114,12 @@ std::optional<SurfacePoint> RigidBody::closest_within(const Eigen::Vector3d& p,
                                                       double radius) const {
   SurfacePoint best;
   best.distance = std::numeric_limits<double>::infinity();
-  // Float boxes may sit an ulp inside the double triangles: keep a margin so no candidate
-  // that could be closest is culled.
-  const double margin = 1e-6 * box_.diagonal() + 1e-12;
+  // Embree culls with float boxes and a float query point, each off by an ulp or so: keep a
+  // margin so no candidate that could be closest is culled.
+  const double float_error = 4.0 * std::numeric_limits<float>::epsilon() *
+                             (p.cwiseAbs().maxCoeff() + box_.max.cwiseAbs().maxCoeff() +
+                              (std::isfinite(radius) ? radius : 0.0));
+  const double margin = 1e-6 * box_.diagonal() + float_error + 1e-12;
   bvh_->visit_near(p, radius + margin, [&](int triangle) {
     const SurfacePoint s = surface_point_on(triangle, p);
     if (s.distance < best.distance) best = s;

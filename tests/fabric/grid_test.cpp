@@ -188,16 +188,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // More than 50 million nodes.
                       GridSpec{0.1, 0.1, 10000, 10000}, GridSpec{0.1, 0.1, 50'000'000, 1}));
 
+// Divisions near INT_MAX must be refused, not overflow while counting nodes.
 TEST(FabricGrid, HugeDivisionsThrow) {
-  // divisions_warp + 1 overflows int before validate() widens it to long long.
-  // BUG (src/fabric/grid.cpp, validate): `static_cast<long long>(spec.divisions_warp + 1)`
-  // adds in int. Input {0.1, 0.1, INT_MAX, 1}: expected std::invalid_argument ("more than
-  // 50 million nodes"); the sum is signed overflow (undefined behaviour; in practice it wraps to
-  // INT_MIN, the node-count product is negative, the check passes and n = INT_MIN). Scenes
-  // cap divisions at 10000 (src/scene/scene_toml.cpp), so the CLI cannot reach it. Not run:
-  // running it would execute the undefined behaviour.
-  GTEST_SKIP() << "BUG: FabricGrid({0.1, 0.1, INT_MAX, 1}) overflows int in validate() "
-                  "instead of throwing std::invalid_argument";
   EXPECT_THROW(FabricGrid(GridSpec{0.1, 0.1, INT_MAX, 1}), std::invalid_argument);
   EXPECT_THROW(FabricGrid(GridSpec{0.1, 0.1, 1, INT_MAX}), std::invalid_argument);
 }

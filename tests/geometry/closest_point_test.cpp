@@ -173,20 +173,13 @@ TEST_P(ClosestPointDegenerate, MatchesBruteForce) {
   for (const V& p : {d.a, d.b, d.c, V(0.5 * (d.a + d.c)), V(d.a + V(0, 0, 1)), V(2.0 * d.c - d.a)})
     queries.push_back(p);
 
-  // BUG (src/geometry/closest_point.cpp, closest_point_on_triangle): on a triangle whose
-  // vertices are exactly collinear in doubles (cross product exactly 0), the face-region
-  // denominator va + vb + vc is rounding noise instead of 0; when the noise is > 0 the
-  // `!(denominator > 0.0)` guard lets it through and the face branch divides noise.
-  // Input: a (0,0,0), b (1,1,1), c (3,3,3), p (8.0845123910746644, 6.630257982506059,
-  // -9.5663240765938458). Expected: the closest point of segment a–c, (1.71615, 1.71615,
-  // 1.71615), distance 13.85636. Got: feature face, point (2/3, 2/3, 2/3), distance 13.97508.
-  // The header promises "a degenerate triangle is treated as its three edges". Skipped
-  // while the bug is present; the checks below run once it is fixed.
-  if ((d.b - d.a).cross(d.c - d.a).isZero(0.0))
-    for (const V& p : queries)
-      if (closest_point_on_triangle(p, d.a, d.b, d.c).feature == TriangleFeature::face)
-        GTEST_SKIP() << "BUG: face reported on the exactly collinear triangle '" << d.name
-                     << "' for p = " << p.transpose() << " (wrong closest point)";
+  // Exactly collinear vertices: the answer must come from the edges, never the face.
+  if ((d.b - d.a).cross(d.c - d.a).isZero(0.0)) {
+    for (const V& p : queries) {
+      EXPECT_NE(closest_point_on_triangle(p, d.a, d.b, d.c).feature, TriangleFeature::face)
+          << d.name << ", p = " << p.transpose();
+    }
+  }
 
   for (const V& p : queries) check_query(p, d.a, d.b, d.c, kSliverTol);
 }

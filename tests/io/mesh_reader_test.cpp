@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -185,6 +186,34 @@ TEST_F(MeshReaderFiles, Garbage) {
   expect_input_error(write("garbage.obj", bytes));
   expect_input_error(write("garbage.xyzzy", bytes));
 }
+
+// Real files of each format from mature loaders' test suites (tests/data/meshes/README.md);
+// the counts were taken by hand from the files.
+struct FormatCase {
+  const char* file;
+  std::size_t triangles;
+};
+
+class MeshReaderFormat : public ::testing::TestWithParam<FormatCase> {};
+
+TEST_P(MeshReaderFormat, ReadsEveryTriangle) {
+  const TriangleMesh mesh = read_mesh(test::source_path(std::string("tests/data/meshes/") + GetParam().file));
+  EXPECT_EQ(mesh.triangles.size(), GetParam().triangles);
+  for (const auto& t : mesh.triangles)
+    for (const int v : t) EXPECT_LT(static_cast<std::size_t>(v), mesh.vertices.size());
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, MeshReaderFormat,
+                         ::testing::Values(FormatCase{"assimp_cube.ply", 12},
+                                           FormatCase{"assimp_cube_binary.ply", 12},
+                                           FormatCase{"numpystl_Moon_Chinese.stl", 116},
+                                           FormatCase{"numpystl_StarWithEmptyHeader.stl", 68}),
+                         [](const auto& case_info) {
+                           std::string name = case_info.param.file;
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace fabform

@@ -178,56 +178,38 @@ TEST(MaterialCsv, FewerThanTwoPoints) {
   }
 }
 
-// The next three tests check rules of the spec that src/material/material_csv.cpp does not
-// enforce yet. While the bug is present they SKIP (CI stays green) and say why; once it is
-// fixed they check the error and its line.
+// Rules of the number grammar and directives (materials/README.md, lexical rules and
+// structure 1), each with the line the error must name.
 
 TEST(MaterialCsv, RejectsHexFloats) {
-  // Spec, lexical rules: "inf, nan, hex floats ... are errors".
   std::istringstream in(kHeader + "0,0\n0x1p-3,1\n");
   try {
-    const TensionTable table = parse_material_table(in, kSource);
-    // BUG (src/material/material_csv.cpp, parse_number uses std::strtod, which reads hex):
-    // input "0x1p-3,1" as a data line; expected InputError at line 3; got a point at strain
-    // 0.125.
-    GTEST_SKIP() << "BUG: hex float '0x1p-3' accepted as strain " << table.points()[1].strain
-                 << " (spec: hex floats are errors)";
+    parse_material_table(in, kSource);
+    FAIL() << "hex float accepted";
   } catch (const InputError& error) {
     EXPECT_EQ(error.where().line, 3) << error.what();
   }
 }
 
 TEST(MaterialCsv, RejectsRepeatedDirective) {
-  // Spec, structure 1: "A key may appear only once."
   std::istringstream in("thickness_m,0.001\nthickness_m,0.002\nstrain,stress_Pa\n0,0\n0.1,1e5\n");
   try {
-    const TensionTable table = parse_material_table(in, kSource);
-    // BUG (src/material/material_csv.cpp, take_before_header overwrites thickness_m_):
-    // expected InputError at line 2; got a table using the second thickness (T(0.1) = 200).
-    GTEST_SKIP() << "BUG: repeated 'thickness_m' accepted (T(0.1) = "
-                 << table.points()[1].tension_N_per_m << " N/m); spec: a key may appear only once";
+    parse_material_table(in, kSource);
+    FAIL() << "repeated thickness_m accepted";
   } catch (const InputError& error) {
     EXPECT_EQ(error.where().line, 2) << error.what();
   }
 }
 
+// Only overflow to infinity is an error: 1e-400 reads as 0 (as in the reference reader,
+// tools/derive_wang2011_tables.py), 1e-310 as a subnormal.
 TEST(MaterialCsv, AcceptsNumbersThatUnderflow) {
-  // Spec, lexical rules: a number of the given form "is read as an IEEE double and must be
-  // finite"; only overflow to infinity is an error. 1e-400 reads as 0 (so does the reference
-  // reader, tools/derive_wang2011_tables.py parse_number), 1e-310 as a subnormal.
   std::istringstream in(kHeader + "0,0\n0.1,1e-400\n0.2,1e-310\n0.3,1\n");
-  try {
-    const TensionTable table = parse_material_table(in, kSource);
-    ASSERT_EQ(table.points().size(), 4u);
-    EXPECT_EQ(table.points()[1].tension_N_per_m, 0.0);
-    EXPECT_GT(table.points()[2].tension_N_per_m, 0.0);
-    EXPECT_LT(table.points()[2].tension_N_per_m, 1e-300);
-  } catch (const InputError& error) {
-    // BUG (src/material/material_csv.cpp, parse_number rejects errno == ERANGE, which strtod
-    // also sets on underflow): input "0.1,1e-400"; expected a point of value 0; got
-    // InputError "value '1e-400' is not a finite number" at line 3.
-    GTEST_SKIP() << "BUG: underflowing number rejected: " << error.what();
-  }
+  const TensionTable table = parse_material_table(in, kSource);
+  ASSERT_EQ(table.points().size(), 4u);
+  EXPECT_EQ(table.points()[1].tension_N_per_m, 0.0);
+  EXPECT_GT(table.points()[2].tension_N_per_m, 0.0);
+  EXPECT_LT(table.points()[2].tension_N_per_m, 1e-300);
 }
 
 TEST(MaterialCsv, MissingFileNamesThePath) {

@@ -121,7 +121,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadValue{"tolerance_N = 1e-3", "C = 1.0", "solver.C", 9},
                       BadValue{"tolerance_N = 1e-3", "name = \"newton\"", "solver.name", 9},
                       BadValue{"tolerance_N = 1e-3", "max_iterations = -5", "solver.max_iterations", 9},
-                      BadValue{"tolerance_N = 1e-3", "threads = 0", "solver.threads", 9}));
+                      BadValue{"tolerance_N = 1e-3", "threads = 0", "solver.threads", 9}),
+    [](const auto& case_info) {
+      std::string name = std::string(case_info.param.key) + "_" + std::to_string(case_info.index);
+      for (char& c : name)
+        if (c == '.') c = '_';
+      return name;
+    });
 
 TEST(LoadScene, MissingRequiredKeyNamesIt) {
   std::string text = kMinimal;
