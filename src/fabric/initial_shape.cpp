@@ -29,16 +29,20 @@ double lift_of(const FabricGrid& grid, int node, const InitialShape& shape) {
 
 }  // namespace
 
-std::string InitialShape::invalid_reason() const {
-  const bool finite = std::isfinite(height_m) && std::isfinite(radius_m) &&
-                      std::isfinite(facing_deg) && std::isfinite(span_deg) &&
-                      axis_xy_m.allFinite();
-  if (!finite) return "values must be finite";
+std::string InitialShape::invalid_reason(std::string* field) const {
+  const auto bad = [&](const char* name, const char* why) {
+    if (field) *field = name;
+    return std::string(why);
+  };
+  if (!std::isfinite(height_m)) return bad("height_m", "must be finite");
   if ((kind == Kind::lift || kind == Kind::bump) && height_m == 0.0)
-    return "height_m must not be zero";
-  if (kind == Kind::wrap && !(radius_m > 0.0)) return "radius_m must be positive";
+    return bad("height_m", "must not be zero");
+  if (!axis_xy_m.allFinite()) return bad("axis_m", "must be finite");
+  if (!std::isfinite(facing_deg)) return bad("facing_deg", "must be finite");
+  if (kind == Kind::wrap && !(std::isfinite(radius_m) && radius_m > 0.0))
+    return bad("radius_m", "must be positive");
   if (kind == Kind::wrap && !(span_deg > 0.0 && span_deg < 360.0))
-    return "span_deg must be in (0, 360)";
+    return bad("span_deg", "must be in (0, 360)");
   return "";
 }
 

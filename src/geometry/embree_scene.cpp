@@ -41,6 +41,16 @@ EmbreeScene::EmbreeScene(const std::vector<Eigen::Vector3d>& vertices,
                          const std::vector<std::array<int, 3>>& triangles) {
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw std::runtime_error("Embree: cannot create a device");
+  try {
+    build(vertices, triangles);
+  } catch (...) {  // a constructor that throws runs no destructor: release here
+    release();
+    throw;
+  }
+}
+
+void EmbreeScene::build(const std::vector<Eigen::Vector3d>& vertices,
+                        const std::vector<std::array<int, 3>>& triangles) {
   scene_ = rtcNewScene(as_device(device_));
   check("creating a scene");
   rtcSetSceneFlags(as_scene(scene_), RTC_SCENE_FLAG_ROBUST);
@@ -66,10 +76,13 @@ EmbreeScene::EmbreeScene(const std::vector<Eigen::Vector3d>& vertices,
   check("building the BVH");
 }
 
-EmbreeScene::~EmbreeScene() {
+void EmbreeScene::release() {
   if (scene_) rtcReleaseScene(as_scene(scene_));
   if (device_) rtcReleaseDevice(as_device(device_));
+  scene_ = device_ = nullptr;
 }
+
+EmbreeScene::~EmbreeScene() { release(); }
 
 void EmbreeScene::check(const char* doing) const {
   const RTCError code = rtcGetDeviceError(as_device(device_));

@@ -33,6 +33,9 @@ class EmbreeScene {
                                   double t_near, double t_far) const;
 
  private:
+  void build(const std::vector<Eigen::Vector3d>& vertices,
+             const std::vector<std::array<int, 3>>& triangles);
+  void release();
   void check(const char* doing) const;
 
   void* device_ = nullptr;  // RTCDevice

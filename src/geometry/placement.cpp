@@ -19,10 +19,14 @@ Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d& degrees) {
 
 }  // namespace
 
-std::string Placement::invalid_reason() const {
-  if (!(std::isfinite(scale) && scale > 0.0)) return "scale must be positive and finite";
-  if (!rotation_deg.allFinite()) return "rotation must be finite";
-  if (!translation_m.allFinite()) return "translation must be finite";
+std::string Placement::invalid_reason(std::string* field) const {
+  const auto bad = [&](const char* name, const char* why) {
+    if (field) *field = name;
+    return std::string(why);
+  };
+  if (!(std::isfinite(scale) && scale > 0.0)) return bad("scale", "must be positive and finite");
+  if (!rotation_deg.allFinite()) return bad("rotation_deg", "must be finite");
+  if (!translation_m.allFinite()) return bad("translation_m", "must be finite");
   return "";
 }
 

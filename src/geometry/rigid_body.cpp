@@ -53,7 +53,11 @@ void RigidBody::compute_normals() {
   const auto& V = mesh_.vertices;
   face_normals_.resize(mesh_.triangles.size());
   vertex_normals_.assign(V.size(), Eigen::Vector3d::Zero());
-  std::map<std::pair<int, int>, Eigen::Vector3d> edge_sum;
+  struct EdgeFaces {
+    Eigen::Vector3d normal_sum = Eigen::Vector3d::Zero();
+    int count = 0;
+  };
+  std::map<std::pair<int, int>, EdgeFaces> edges;
   for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
     const auto& tri = mesh_.triangles[t];
     const Eigen::Vector3d n = normalized_or_zero((V[tri[1]] - V[tri[0]]).cross(V[tri[2]] - V[tri[0]]));
@@ -61,20 +65,48 @@ void RigidBody::compute_normals() {
     for (int c = 0; c < 3; ++c) {
       const int a = tri[c], b = tri[(c + 1) % 3], o = tri[(c + 2) % 3];
       vertex_normals_[a] += corner_angle(V[a], V[b], V[o]) * n;
-      // Eigen does not zero a default-constructed vector, so insert zero explicitly.
-      auto slot = edge_sum.try_emplace({std::min(a, b), std::max(a, b)}, Eigen::Vector3d::Zero());
-      slot.first->second += n;
+      EdgeFaces& edge = edges[{std::min(a, b), std::max(a, b)}];
+      edge.normal_sum += n;
+      ++edge.count;
     }
   }
   for (auto& n : vertex_normals_) n = normalized_or_zero(n);
   edge_normals_.resize(mesh_.triangles.size());
+  edge_on_rim_.assign(mesh_.triangles.size(), {false, false, false});
+  vertex_on_rim_.assign(V.size(), 0);
   for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
     const auto& tri = mesh_.triangles[t];
     for (int c = 0; c < 3; ++c) {
       const int a = tri[c], b = tri[(c + 1) % 3];
-      edge_normals_[t][c] = normalized_or_zero(edge_sum.at({std::min(a, b), std::max(a, b)}));
+      const EdgeFaces& edge = edges.at({std::min(a, b), std::max(a, b)});
+      edge_normals_[t][c] = normalized_or_zero(edge.normal_sum);
+      edge_on_rim_[t][c] = edge.count == 1;
+      if (edge.count == 1) vertex_on_rim_[a] = vertex_on_rim_[b] = 1;
     }
   }
+}
+
+// An open mesh (a dress form, a disc) has no inside beyond its rim: a point whose closest
+// feature is a boundary edge or vertex is outside, whatever side of the face it is on.
+bool RigidBody::on_rim(int triangle, TriangleFeature feature) const {
+  const auto& tri = mesh_.triangles[triangle];
+  switch (feature) {
+    case TriangleFeature::face: return false;
+    case TriangleFeature::edge01: return edge_on_rim_[triangle][0];
+    case TriangleFeature::edge12: return edge_on_rim_[triangle][1];
+    case TriangleFeature::edge20: return edge_on_rim_[triangle][2];
+    case TriangleFeature::vertex0: return vertex_on_rim_[tri[0]] != 0;
+    case TriangleFeature::vertex1: return vertex_on_rim_[tri[1]] != 0;
+    case TriangleFeature::vertex2: return vertex_on_rim_[tri[2]] != 0;
+  }
+  return false;
+}
+
+double RigidBody::signed_volume() const {
+  double six_volume = 0.0;
+  for (const auto& t : mesh_.triangles)
+    six_volume += mesh_.vertices[t[0]].dot(mesh_.vertices[t[1]].cross(mesh_.vertices[t[2]]));
+  return six_volume / 6.0;
 }
 
 Eigen::Vector3d RigidBody::feature_normal(int triangle, TriangleFeature feature) const {
@@ -101,7 +133,8 @@ SurfacePoint RigidBody::surface_point_on(int triangle, const Eigen::Vector3d& p)
   s.normal = feature_normal(triangle, c.feature);
   if (s.normal.isZero()) s.normal = face_normals_[triangle];
   s.distance = (p - c.point).norm();
-  s.signed_distance = (p - c.point).dot(s.normal) < 0.0 ? -s.distance : s.distance;
+  const bool inside = !on_rim(triangle, c.feature) && (p - c.point).dot(s.normal) < 0.0;
+  s.signed_distance = inside ? -s.distance : s.distance;
   return s;
 }
 

@@ -77,12 +77,4 @@ double TensionTable::energy_density(double strain) const {
   return energy_from_first_point(strain) - energy_at_zero_;
 }
 
-double TensionTable::max_slope() const {
-  double steepest = 0.0;
-  for (std::size_t k = 0; k + 1 < points_.size(); ++k)
-    steepest = std::max(steepest, (points_[k + 1].tension_N_per_m - points_[k].tension_N_per_m) /
-                                      (points_[k + 1].strain - points_[k].strain));
-  return steepest;
-}
-
 }  // namespace fabform

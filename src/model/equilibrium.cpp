@@ -12,7 +12,12 @@ Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask lock
                                  const Eigen::Vector3d* contact_normal) {
   const Eigen::Vector3d free = remove_locked(resultant, locks);
   if (!contact_normal || free.dot(*contact_normal) >= 0.0) return free;
-  return remove_locked(free - free.dot(*contact_normal) * *contact_normal, locks);
+  // Pressing on the body, the node may move only along free axes that keep it on the tangent
+  // plane: remove the part along the normal's free-axis component.
+  const Eigen::Vector3d normal_free = remove_locked(*contact_normal, locks);
+  const double length2 = normal_free.squaredNorm();
+  if (length2 == 0.0) return free;
+  return free - (free.dot(normal_free) / length2) * normal_free;
 }
 
 namespace {

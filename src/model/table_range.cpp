@@ -37,9 +37,7 @@ std::vector<std::string> table_range_warnings(const Model& model,
     const double strain = spring_strain(x[static_cast<std::size_t>(spring.a)],
                                         x[static_cast<std::size_t>(spring.b)], spring.rest_length);
     ++(is_warp ? warp_total : weft_total);
-    // Slack springs of a tension-only table carry no force: nothing is extrapolated there.
-    const bool outside = strain > table.max_strain() || (!table.tension_only() && strain < table.min_strain());
-    if (!outside) continue;
+    if (!table.beyond_range(strain)) continue;
     RangeCount& c = is_warp ? warp : weft;
     ++c.beyond;
     if (std::abs(strain) > std::abs(c.extreme)) c.extreme = strain;

@@ -46,6 +46,10 @@ std::string result_json(const RunRecord& run) {
   for (const RigidBody& b : run.model.bodies)
     bodies.push_back({{"name", b.name()}, {"triangles", b.mesh().triangles.size()}});
   j["bodies"] = bodies;
+  nlohmann::json constraints = nlohmann::json::array();
+  for (const ConstraintSpec& c : run.scene.constraints)
+    constraints.push_back({{"nodes", c.nodes_text}, {"axes", axes_to_string(c.axes)}});
+  j["constraints"] = constraints;
   j["warnings"] = run.warnings;
   return j.dump(2) + "\n";
 }

@@ -1,6 +1,7 @@
 #include "fabform/scene/model_builder.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "fabform/io/mesh_reader.hpp"
@@ -9,17 +10,52 @@
 namespace fabform {
 namespace {
 
+// Embree works in single precision and contact tolerances are relative to the scene; a
+// coordinate beyond a thousand kilometres is a unit mistake, not a fabric.
+constexpr double kMaxCoordinate_m = 1e6;
+
+// A file named by the scene and missing is the scene's error: name its line and key.
+void require_file(const std::string& path, const SourceLocation& where, const char* what) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(where, std::string("no such ") + what + " '" + path + "'");
+}
+
+bool within_range(const std::vector<Eigen::Vector3d>& points) {
+  for (const auto& p : points)
+    if (!(p.cwiseAbs().maxCoeff() <= kMaxCoordinate_m)) return false;
+  return true;
+}
+
+TensionTable read_table(const std::string& path, const SourceLocation& where) {
+  require_file(path, where, "material table");
+  return read_material_table(path);
+}
+
+RigidBody build_body(const BodySpec& spec) {
+  require_file(spec.mesh_path, spec.mesh_where, "mesh");
+  TriangleMesh mesh = place(read_mesh(spec.mesh_path), spec.placement);
+  if (!within_range(mesh.vertices))
+    throw InputError(spec.where, "the placed mesh reaches beyond 1e6 m: check units, scale and translation");
+  try {
+    return RigidBody(spec.name, std::move(mesh));
+  } catch (const std::invalid_argument& error) {
+    throw InputError({spec.mesh_path, 0, ""}, error.what());
+  }
+}
+
 std::vector<RigidBody> build_bodies(const Scene& scene) {
   std::vector<RigidBody> bodies;
-  for (const BodySpec& spec : scene.bodies) {
-    TriangleMesh mesh = place(read_mesh(spec.mesh_path), spec.placement);
-    try {
-      bodies.emplace_back(spec.name, std::move(mesh));
-    } catch (const std::invalid_argument& error) {
-      throw InputError({spec.mesh_path, 0, ""}, error.what());
-    }
-  }
+  for (const BodySpec& spec : scene.bodies) bodies.push_back(build_body(spec));
   return bodies;
+}
+
+FabricGrid build_grid(const Scene& scene) {
+  try {
+    return FabricGrid(scene.grid);
+  } catch (const std::invalid_argument& error) {
+    throw InputError(scene.grid_where, error.what());
+  }
 }
 
 std::vector<AxisMask> build_locks(const Scene& scene, const FabricGrid& grid) {
@@ -30,14 +66,31 @@ std::vector<AxisMask> build_locks(const Scene& scene, const FabricGrid& grid) {
       throw InputError(c.where, "node set " + c.nodes_text + " selects no node of the " +
                                     std::to_string(grid.nodes_warp()) + " x " +
                                     std::to_string(grid.nodes_weft()) + " grid");
-    for (const int k : nodes)
-      locks[static_cast<std::size_t>(k)] = static_cast<AxisMask>(locks[static_cast<std::size_t>(k)] | c.axes);
+    for (const int k : nodes) {
+      auto& lock = locks[static_cast<std::size_t>(k)];
+      lock = static_cast<AxisMask>(lock | c.axes);
+    }
   }
   return locks;
 }
 
+std::vector<Eigen::Vector3d> build_start(const Scene& scene, const FabricGrid& grid) {
+  std::vector<Eigen::Vector3d> start = initial_positions(grid, scene.origin_m, scene.initial);
+  if (!within_range(start))
+    throw InputError(scene.initial_where, "the fabric starts beyond 1e6 m: check origin_m and the initial shape");
+  return start;
+}
+
 std::string node_name(const FabricGrid& grid, int k) {
   return "node (" + std::to_string(grid.i_of(k)) + ", " + std::to_string(grid.j_of(k)) + ")";
+}
+
+// An outward-oriented closed mesh encloses a positive volume; a negative one means the faces
+// point inward, which makes everything outside look inside.
+std::string orientation_hint(const RigidBody& body) {
+  return body.signed_volume() < 0.0
+             ? "; the mesh's faces point inward (negative enclosed volume): flip its orientation"
+             : "; the initial shape must clear it";
 }
 
 // Seed 003 starts from a deformation with "no contact or intersection" with the body.
@@ -49,8 +102,8 @@ void check_clear_start(const Scene& scene, const Model& model) {
         char depth[64];
         std::snprintf(depth, sizeof depth, "%.3g", -s.signed_distance);
         throw InputError(scene.initial_where, node_name(model.grid, k) + " starts inside body '" +
-                                                  body.name() + "' (" + depth +
-                                                  " m deep); the initial shape must clear it");
+                                                  body.name() + "' (" + depth + " m deep)" +
+                                                  orientation_hint(body));
       }
     }
     for (const Spring& spring : model.grid.springs())
@@ -66,13 +119,13 @@ void check_clear_start(const Scene& scene, const Model& model) {
 }  // namespace
 
 Model build_model(const Scene& scene) {
-  FabricGrid grid(scene.grid);
+  FabricGrid grid = build_grid(scene);
   Model model{grid,
-              read_material_table(scene.warp_path),
-              read_material_table(scene.weft_path),
+              read_table(scene.warp_path, scene.warp_where),
+              read_table(scene.weft_path, scene.weft_where),
               build_locks(scene, grid),
               build_bodies(scene),
-              initial_positions(grid, scene.origin_m, scene.initial)};
+              build_start(scene, grid)};
   check_clear_start(scene, model);
   return model;
 }

@@ -63,12 +63,6 @@ class TableReader {
     return *value;
   }
 
-  double positive(const std::string& key, double fallback, bool required = false) {
-    const double value = number(key, fallback, required);
-    if (!(value > 0.0)) fail(key, "must be positive");
-    return value;
-  }
-
   long long integer(const std::string& key, long long fallback, bool required = false) {
     const toml::node* n = take(key);
     if (!n) {
@@ -165,6 +159,10 @@ class TableReader {
   }
 
   SourceLocation where() const { return locate(table_, prefix_); }
+  /// Where a key of this table was written (the table itself when the key is absent).
+  SourceLocation locate_key(const std::string& key) const {
+    return locate(node(key) ? node(key) : table_, dotted(key));
+  }
   const std::string& file() const { return file_; }
 
  private:
@@ -198,11 +196,12 @@ void read_fabric(TableReader r, Scene* scene) {
   const auto [n, m] = r.integer_pair("divisions", true);
   scene->grid = {size.x(), size.y(), checked_int(r, "divisions", n, 1, 10000),
                  checked_int(r, "divisions", m, 1, 10000)};
-  if (static_cast<long long>(n + 1) * (m + 1) > 50'000'000LL)
-    r.fail("divisions", "more than 50 million nodes");
+  scene->grid_where = r.locate_key("divisions");
   scene->origin_m = r.vector<3>("origin_m", Eigen::Vector3d::Zero());
   scene->warp_path = resolve(scene->path, r.text("warp", "", true));
+  scene->warp_where = r.locate_key("warp");
   scene->weft_path = resolve(scene->path, r.text("weft", "", true));
+  scene->weft_where = r.locate_key("weft");
   r.reject_unknown({"size_m", "divisions", "origin_m", "warp", "weft"});
 }
 
@@ -211,12 +210,15 @@ BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t ind
   body.where = r.where();
   body.name = r.text("name", "body" + std::to_string(index));
   body.mesh_path = resolve(scene_path, r.text("mesh", "", true));
+  body.mesh_where = r.locate_key("mesh");
   body.units = r.text("units", "", true);
   if (!parse_length_unit(body.units, &body.placement.metres_per_unit))
     r.fail("units", "must be one of m, cm, mm, in (got '" + body.units + "')");
-  body.placement.scale = r.positive("scale", 1.0);
+  body.placement.scale = r.number("scale", 1.0);
   body.placement.rotation_deg = r.vector<3>("rotation_deg", Eigen::Vector3d::Zero());
   body.placement.translation_m = r.vector<3>("translation_m", Eigen::Vector3d::Zero());
+  std::string field;
+  if (const std::string why = body.placement.invalid_reason(&field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m"});
   return body;
 }
@@ -275,14 +277,14 @@ void read_initial(TableReader r, Scene* scene) {
   InitialShape& s = scene->initial;
   const bool raises = s.kind == Kind::lift || s.kind == Kind::bump;
   s.height_m = r.number("height_m", 0.0, raises);
-  if (raises && s.height_m == 0.0) r.fail("height_m", "must not be zero");
   if (s.kind == Kind::wrap) {
     s.axis_xy_m = r.vector<2>("axis_m", Eigen::Vector2d::Zero(), true);
-    s.radius_m = r.positive("radius_m", 0.0, true);
+    s.radius_m = r.number("radius_m", 0.0, true);
     s.facing_deg = r.number("facing_deg", 0.0, true);
     s.span_deg = r.number("span_deg", 0.0, true);
-    if (!(s.span_deg > 0.0 && s.span_deg < 360.0)) r.fail("span_deg", "must be in (0, 360)");
   }
+  std::string field;
+  if (const std::string why = s.invalid_reason(&field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"shape", "height_m", "axis_m", "radius_m", "facing_deg", "span_deg"});
 }
 
@@ -292,13 +294,14 @@ void read_solver(TableReader r, Scene* scene) {
   bool known = false;
   for (const auto& name : solver_names()) known = known || name == s.name;
   if (!known) r.fail("name", "unknown solver '" + s.name + "' (see `fabform solvers`)");
-  s.relax.tolerance_N = r.positive("tolerance_N", s.relax.tolerance_N);
+  s.relax.tolerance_N = r.number("tolerance_N", s.relax.tolerance_N);
   s.relax.max_iterations =
       checked_int(r, "max_iterations", r.integer("max_iterations", s.relax.max_iterations), 0,
                   1'000'000'000);
   s.relax.C = r.number("C", s.relax.C);
-  if (!(s.relax.C > 1.0)) r.fail("C", "must be greater than 1 (the step is divided by C)");
   s.threads = checked_int(r, "threads", r.integer("threads", 1), 1, 1024);
+  std::string field;
+  if (const std::string why = s.relax.invalid_reason(&field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"name", "tolerance_N", "max_iterations", "C", "threads"});
 }
 

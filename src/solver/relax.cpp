@@ -5,21 +5,27 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/stretch_forces.hpp"
 
 namespace fabform {
 
-std::string RelaxOptions::invalid_reason() const {
-  if (!(std::isfinite(C) && C > 1.0)) return "C must be a finite number greater than 1";
-  if (!(std::isfinite(tolerance_N) && tolerance_N >= 0.0))
-    return "tolerance must be a finite, non-negative force";
-  if (max_iterations < 0) return "the iteration cap must not be negative";
-  if (!(min_step_fraction > 0.0 && min_step_fraction < 1.0))
-    return "min_step_fraction must be in (0, 1)";
-  if (!(std::isfinite(contact_tolerance_m) && contact_tolerance_m > 0.0))
-    return "contact tolerance must be positive";
+std::string RelaxOptions::invalid_reason(std::string* field) const {
+  const auto bad = [&](const char* name, const char* why) {
+    if (field) *field = name;
+    return std::string(why);
+  };
+  if (!(C > 1.0 && C <= 1e6)) return bad("C", "must be greater than 1 and at most 1e6");
+  if (!(std::isfinite(tolerance_N) && tolerance_N > 0.0))
+    return bad("tolerance_N", "must be a positive, finite force");
+  if (max_iterations < 0) return bad("max_iterations", "must not be negative");
+  if (!(min_step_fraction >= 1e-300 && min_step_fraction < 1.0))
+    return bad("min_step_fraction", "must be in [1e-300, 1)");
+  // Bounds the divisions per node and sweep (C barely above 1 would take billions).
+  if (std::log(1.0 / min_step_fraction) / std::log(C) > 1e5)
+    return bad("C", "is too close to 1: over 100000 step divisions per node and sweep");
   return "";
 }
 
@@ -37,7 +43,11 @@ struct Candidate {
 class Relaxation {
  public:
   Relaxation(const Model& model, SolverState& state, const RelaxOptions& options)
-      : model_(model), state_(state), options_(options) {}
+      : model_(model),
+        state_(state),
+        options_(options),
+        step_attempts_(static_cast<int>(
+            std::ceil(std::log(1.0 / options.min_step_fraction) / std::log(options.C)))) {}
 
   void sweep() {
     for (int k = 0; k < model_.node_count(); ++k) relax_node(k);
@@ -80,10 +90,9 @@ class Relaxation {
     const double residual = push.norm();
     if (!(residual > 0.0)) return;
     const Eigen::Vector3d direction = push / residual;
-    const double first_step = first_step_length(k);
-    for (double step = first_step; step >= first_step * options_.min_step_fraction;
-         step /= options_.C) {
-      Candidate candidate = move(k, direction * step, contact);
+    double step = first_step_length(k);
+    for (int attempt = 0; attempt < step_attempts_; ++attempt, step /= options_.C) {
+      const Candidate candidate = move(k, direction * step, contact);
       if (node_residual(k, candidate.x, candidate.contact) < residual) {
         state_.x[i] = candidate.x;
         contact = candidate.contact;
@@ -107,8 +116,9 @@ class Relaxation {
   Candidate move(int k, const Eigen::Vector3d& step, const NodeContact& contact) const {
     const Eigen::Vector3d& from = state_.x[static_cast<std::size_t>(k)];
     const Eigen::Vector3d to = from + remove_locked(step, lock(k));
-    if (contact.active()) return slide(to, (to - from).norm(), contact.body);
-    return fly(from, to);
+    if (!contact.active()) return fly(from, to, lock(k));
+    if (lock(k) == 0) return slide(to, (to - from).norm(), contact.body);
+    return slide_locked(from, to, contact, lock(k));
   }
 
   // A contact node moved on the tangent plane is projected back onto the surface (Fig. 8).
@@ -120,15 +130,37 @@ class Relaxation {
     return {projected.point, NodeContact{body, projected.normal}};
   }
 
+  // A node held on some axes cannot be projected to the closest surface point: that would move
+  // it along them. It returns to the surface along the free part of the normal instead, or, if
+  // the surface fell away further than the step, it is free.
+  Candidate slide_locked(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                         const NodeContact& contact, AxisMask locks) const {
+    const Eigen::Vector3d along = remove_locked(contact.normal, locks).normalized();
+    const double reach = 2.0 * (to - from).norm();
+    const RigidBody& body = model_.bodies[static_cast<std::size_t>(contact.body)];
+    const auto s = body.first_entry(to + reach * along, to - reach * along);
+    if (!s) return {to, NodeContact{}};
+    return {keep_locked(s->point, to, locks), NodeContact{contact.body, s->normal}};
+  }
+
+  // Entry points are snapped onto their triangle, which can move them by a rounding error;
+  // a held coordinate must not move at all.
+  static Eigen::Vector3d keep_locked(Eigen::Vector3d point, const Eigen::Vector3d& reference,
+                                     AxisMask locks) {
+    for (int axis = 0; axis < 3; ++axis)
+      if (locks & (1 << axis)) point[axis] = reference[axis];
+    return point;
+  }
+
   // A free node moves straight; if the move enters a body, it stops on the surface there.
-  Candidate fly(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+  Candidate fly(const Eigen::Vector3d& from, const Eigen::Vector3d& to, AxisMask locks) const {
     Candidate result{to, NodeContact{}};
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-      const auto entry = entry_point(model_.bodies[b], from, to);
+      const auto entry = entry_point(model_.bodies[b], from, to, locks);
       if (entry && (entry->point - from).norm() < nearest) {
         nearest = (entry->point - from).norm();
-        result = {entry->point, NodeContact{static_cast<int>(b), entry->normal}};
+        result = {keep_locked(entry->point, to, locks), NodeContact{static_cast<int>(b), entry->normal}};
       }
     }
     return result;
@@ -136,10 +168,11 @@ class Relaxation {
 
   // Embree's single-precision rays can slip through a shared edge (by ~1e-7 of the body's
   // size); a move that ends just inside the body, no deeper than the move is long plus such a
-  // slip, entered it too and stops on the surface.
+  // slip, entered it too and stops on the surface (unless that would move a locked axis).
   static std::optional<SurfacePoint> entry_point(const RigidBody& body, const Eigen::Vector3d& from,
-                                                 const Eigen::Vector3d& to) {
+                                                 const Eigen::Vector3d& to, AxisMask locks) {
     if (auto entry = body.first_entry(from, to)) return entry;
+    if (locks != 0) return std::nullopt;
     const double reach = (to - from).norm() + 1e-6 * body.box().diagonal();
     const auto s = body.closest_within(to, reach);
     if (s && s->signed_distance < 0.0) return s;
@@ -149,6 +182,7 @@ class Relaxation {
   const Model& model_;
   SolverState& state_;
   const RelaxOptions& options_;
+  int step_attempts_;  // divisions by C until ξ is min_step_fraction of its first value
 };
 
 std::string stop_message(const Summary& s) {
@@ -169,6 +203,8 @@ std::string stop_message(const Summary& s) {
 
 Summary relax(const Model& model, SolverState& state, const RelaxOptions& options,
               const IterationObserver& observer) {
+  if (const std::string why = options.invalid_reason(); !why.empty())
+    throw std::invalid_argument("relax: " + why);
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Relaxation relaxation(model, state, options);

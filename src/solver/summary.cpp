@@ -7,7 +7,6 @@ std::string to_string(Termination termination) {
     case Termination::converged: return "converged";
     case Termination::not_converged: return "not converged";
     case Termination::numerical_failure: return "numerical failure";
-    case Termination::interrupted: return "interrupted";
   }
   return "unknown";
 }

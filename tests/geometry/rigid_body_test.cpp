@@ -279,6 +279,17 @@ TEST_F(RigidBodyRealMeshes, FeaturetypeIsOutwardAndOutsidePointsArePositive) {
   }
 }
 
+// The torso is open at the neck: a point above the opening is outside, not "inside" because it
+// lies below the plane of the rim's faces.
+TEST_F(RigidBodyRealMeshes, TorsoAboveItsOpenNeckIsOutside) {
+  const RigidBody& torso = *torso_->body;
+  // (Just above the opening's middle the neck's inner wall is nearest: inside the tube.)
+  for (const double above : {0.03, 0.3}) {
+    const V p(0.0, torso.box().max.y() + above, 0.0);
+    EXPECT_GT(torso.closest(p).signed_distance, 0.0) << above;
+  }
+}
+
 TEST_F(RigidBodyRealMeshes, FeaturetypeFirstEntryMatchesBruteForce) {
   // Segments from outside the bounding box to random points inside it. Brute force: every
   // crossing in double; the first one, if it enters through the front of a face and is not
@@ -495,6 +506,20 @@ TEST(RigidBody, MovedBodyStillAnswers) {
   RigidBody second = std::move(first);
   EXPECT_NEAR(second.closest(V(0, 0, 3)).distance, 2.0, 1e-15);
   EXPECT_EQ(second.name(), "box");
+}
+
+// An open square plate (z = 0, normal +z): below its middle is inside, beyond its rim outside
+// on either side, above it outside.
+TEST(RigidBody, OpenPlateIsOutsideBeyondItsRim) {
+  TriangleMesh plate;
+  plate.vertices = {V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0, 1, 0)};
+  plate.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const RigidBody body("plate", plate);
+  EXPECT_LT(body.closest(V(0.5, 0.5, -0.1)).signed_distance, 0.0);
+  EXPECT_GT(body.closest(V(0.5, 0.5, 0.1)).signed_distance, 0.0);
+  for (const V& beyond : {V(1.5, 0.5, -0.1), V(-0.5, 0.5, -0.3), V(2.0, 2.0, -1.0), V(0.5, 1.2, -0.05)})
+    EXPECT_DOUBLE_EQ(body.closest(beyond).signed_distance, body.closest(beyond).distance)
+        << beyond.transpose();
 }
 
 TEST(RigidBody, InvalidMeshesThrow) {

@@ -32,6 +32,18 @@ TEST(UnbalancedForce, ContactPullingOutKeepsAllOfR) {
 
 // A 3 × 3 node patch whose centre node sits at height z over a sphere whose top is at z = 0
 // below it; the other nodes sit 0.5 mm lower, so the springs pull the centre down.
+// A node held in x and y on a slope can only move in z, which the surface blocks: no residual.
+TEST(UnbalancedForce, LockedNodeOnASlopeIsBalancedByTheSurface) {
+  const Eigen::Vector3d n = Eigen::Vector3d(0.6, 0.0, 0.8);
+  EXPECT_NEAR(unbalanced_force({0.0, 0.0, -1.0}, kLockX | kLockY, &n).norm(), 0.0, 1e-15);
+  // Held in y only, it slides along the slope's fall line in x and z.
+  const Eigen::Vector3d r(0.3, 0.7, -1.0);
+  const Eigen::Vector3d v = unbalanced_force(r, kLockY, &n);
+  EXPECT_EQ(v.y(), 0.0);
+  EXPECT_NEAR(v.dot(n), 0.0, 1e-15);
+  EXPECT_NEAR(v.x(), 0.3 - (0.3 * 0.6 - 0.8) * 0.6, 1e-15);
+}
+
 Model two_by_two_over_sphere(double z) {
   FabricGrid grid({0.02, 0.02, 2, 2});
   std::vector<Eigen::Vector3d> x(9);

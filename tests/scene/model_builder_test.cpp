@@ -95,10 +95,34 @@ TEST_F(ModelBuilder, MeshWithoutTrianglesNamesTheMesh) {
   EXPECT_EQ(e.where().file, mesh);
 }
 
-TEST_F(ModelBuilder, MissingMaterialFile) {
+TEST_F(ModelBuilder, MissingFilesAreBlamedOnTheSceneKey) {
   std::filesystem::remove(dir.path("table.csv"));
+  const InputError table = error(scene(""));
+  EXPECT_EQ(table.where().file, dir.path("scene.toml"));
+  EXPECT_EQ(table.where().key, "fabric.warp");
+  EXPECT_EQ(table.where().line, 4);
+  EXPECT_NE(std::string(table.what()).find(dir.path("table.csv")), std::string::npos);
+  dir.write("table.csv", "strain,tension_N_per_m\n0,0\n1,500\n");
+  std::filesystem::remove(dir.path("sphere.obj"));
+  const InputError mesh = error(scene(""));
+  EXPECT_EQ(mesh.where().key, "body.0.mesh");
+  EXPECT_EQ(mesh.where().line, 7);
+}
+
+TEST_F(ModelBuilder, CoordinatesBeyondAThousandKilometresAreAUnitMistake) {
+  const InputError body = error(scene("") + "[[body]]\nmesh = \"sphere.obj\"\nunits = \"m\"\n"
+                                             "translation_m = [1e39, 0, 0]\n");
+  EXPECT_EQ(body.where().key, "body.1");
+  const InputError fabric = error(scene("", "1e200"));
+  EXPECT_EQ(fabric.where().key, "initial");
+}
+
+TEST_F(ModelBuilder, InvertedMeshIsNamedAsSuch) {
+  TriangleMesh sphere = test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40);
+  for (auto& t : sphere.triangles) std::swap(t[1], t[2]);
+  dir.write("sphere.obj", to_obj(sphere));
   const InputError e = error(scene(""));
-  EXPECT_EQ(e.where().file, dir.path("table.csv"));
+  EXPECT_NE(std::string(e.what()).find("faces point inward"), std::string::npos) << e.what();
 }
 
 }  // namespace

@@ -1,14 +1,51 @@
 // Every shipped scene converges with the faithful solver, rests on its body without entering
-// it, and meets its tolerance by a residual recomputed from the final positions alone.
+// it, and meets its tolerance by a residual recomputed without the solver's force code: the
+// forces are central differences of the fabric's total stretch energy.
 #include <gtest/gtest.h>
 
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/stretch_forces.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
 #include "test_paths.hpp"
 
 namespace fabform {
 namespace {
+
+// −∂E/∂x_k by central differences. Step 1e-9 m: the energy (~1e-2 J) rounds at ~1e-17 J, so
+// the quotient's noise is ~1e-8 N; a table kink inside the step errs by slope jump × width ×
+// step / length ~1e-8 N too.
+Eigen::Vector3d energy_gradient_force(const Model& model, std::vector<Eigen::Vector3d>& x, int k) {
+  const double h = 1e-9;
+  Eigen::Vector3d force;
+  auto& node = x[static_cast<std::size_t>(k)];
+  for (int axis = 0; axis < 3; ++axis) {
+    const double kept = node[axis];
+    node[axis] = kept + h;
+    const double above = stretch_energy(model, x);
+    node[axis] = kept - h;
+    const double below = stretch_energy(model, x);
+    node[axis] = kept;
+    force[axis] = -(above - below) / (2.0 * h);
+  }
+  return force;
+}
+
+// ‖V‖∞ with forces from the energy and contact from geometry (within 10 nm of a surface).
+double independent_residual(const Model& model, std::vector<Eigen::Vector3d> x) {
+  double worst = 0.0;
+  for (int k = 0; k < model.node_count(); ++k) {
+    const Eigen::Vector3d r = energy_gradient_force(model, x, k);
+    std::optional<SurfacePoint> touching;
+    for (const RigidBody& body : model.bodies)
+      if (auto s = body.closest_within(x[static_cast<std::size_t>(k)], 1e-8)) touching = s;
+    const double v = unbalanced_force(r, model.locks[static_cast<std::size_t>(k)],
+                                      touching ? &touching->normal : nullptr)
+                         .norm();
+    worst = std::max(worst, v);
+  }
+  return worst;
+}
 
 struct SceneCase {
   const char* file;
@@ -25,18 +62,13 @@ TEST_P(ShippedScene, ConvergesOnTheBodyWithoutEnteringIt) {
   const Summary summary = relax(model, state, scene.solver.relax);
   ASSERT_TRUE(summary.converged()) << summary.message;
 
-  // Contact is judged within 1e-8 m: ten times the solver's placement tolerance, a hundred
-  // thousand times below the 1 mm facets of the meshes.
+  // The finite-difference noise bound above is 1e-8 N; allow a hundred times that.
+  EXPECT_LE(independent_residual(model, state.x), scene.solver.relax.tolerance_N + 1e-6);
   const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-8);
-  EXPECT_LE(check.max_residual_N, scene.solver.relax.tolerance_N);
   EXPECT_GT(check.contact_nodes, 10) << "the fabric should rest on the body";
   // Float rays can slip through an edge by ~1e-7 of the body's size before the solver catches
   // it; a micrometre is the stated bound on how deep any node may end inside.
   EXPECT_LE(check.max_penetration_m, 1e-6);
-  // Seed 003's record for the mold: the residual passes 2.4e-2 N on the way.
-  bool passed_seed_criterion = false;
-  for (const auto& record : summary.history) passed_seed_criterion |= record.residual_N <= 2.4e-2;
-  EXPECT_TRUE(passed_seed_criterion);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seed003, ShippedScene,

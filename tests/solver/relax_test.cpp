@@ -58,6 +58,22 @@ TEST(RelaxOptions, RejectsBadValues) {
   o = RelaxOptions{};
   o.max_iterations = -1;
   EXPECT_NE(o.invalid_reason(), "");
+  // C barely above 1 would need billions of divisions per node: refused, not a hang.
+  o = RelaxOptions{};
+  o.C = 1.0000000001;
+  std::string field;
+  EXPECT_NE(o.invalid_reason(&field), "");
+  EXPECT_EQ(field, "C");
+  o.C = 1e308;
+  EXPECT_NE(o.invalid_reason(), "");
+}
+
+TEST(Relax, RefusesInvalidOptions) {
+  Model model = clamped_fabric(2);
+  SolverState state = SolverState::at_start(model);
+  RelaxOptions options;
+  options.C = 1.0;
+  EXPECT_THROW(relax(model, state, options), std::invalid_argument);
 }
 
 // With no body, a pre-stretched clamped fabric lifted in the middle relaxes back to flat: every
@@ -86,6 +102,23 @@ TEST(Relax, PrestretchedFabricOverSphereRestsOnIt) {
   // The apex of the sphere sits 1 cm above the perimeter plane: the fabric's centre is on it.
   const Eigen::Vector3d centre = state.x[static_cast<std::size_t>(model.grid.node(10, 10))];
   EXPECT_NEAR(centre.z(), 0.01, 1e-4);
+}
+
+// A locked node in contact keeps its locked coordinates: it is not projected onto the surface
+// along them (seed 003 §3.2.3 with §3.2.2).
+TEST(Relax, LockedNodesInContactKeepTheirLockedCoordinates) {
+  Model model = clamped_fabric(20, 0.1);
+  lift_interior(model, 0.02);
+  model.bodies.emplace_back("sphere", test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 40, 80));
+  for (int j = 1; j < 20; ++j) model.locks[static_cast<std::size_t>(model.grid.node(8, j))] = kLockX;
+  SolverState state;
+  const EquilibriumReport check = relax_to(model, 1e-6, &state);
+  EXPECT_GT(check.contact_nodes, 10);
+  EXPECT_LE(check.max_penetration_m, 1e-9);
+  for (int j = 1; j < 20; ++j) {
+    const auto k = static_cast<std::size_t>(model.grid.node(8, j));
+    EXPECT_EQ(state.x[k].x(), model.start[k].x()) << "node (8, " << j << ")";
+  }
 }
 
 // Seed 003, §3.2.3: a node locked on an axis never moves along it.

@@ -23,8 +23,8 @@ struct InitialShape {
   double facing_deg = 0.0;
   double span_deg = 0.0;
 
-  /// Why the parameters cannot be used, or "" when they can.
-  std::string invalid_reason() const;
+  /// Why the parameters cannot be used, or ""; `field` gets the offending parameter's name.
+  std::string invalid_reason(std::string* field = nullptr) const;
 };
 
 bool parse_initial_kind(const std::string& name, InitialShape::Kind* kind);

@@ -15,7 +15,8 @@ struct Placement {
   Eigen::Vector3d rotation_deg = Eigen::Vector3d::Zero();       // about x, then y, then z
   Eigen::Vector3d translation_m = Eigen::Vector3d::Zero();      // applied last
 
-  std::string invalid_reason() const;
+  /// Why the placement cannot be used, or ""; `field` gets the offending field's name.
+  std::string invalid_reason(std::string* field = nullptr) const;
 };
 
 /// Metres per unit for "m", "cm", "mm", "in"; false for anything else.

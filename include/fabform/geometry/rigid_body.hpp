@@ -17,7 +17,8 @@ namespace fabform {
 class EmbreeScene;
 
 /// A point on the body's surface with its outward normal. For a query point p, distance is
-/// |p − point| and signed_distance is negative when p is inside the body.
+/// |p − point| and signed_distance is negative when p is inside the body (never when the
+/// closest point is on the rim of an open mesh).
 struct SurfacePoint {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
@@ -50,12 +51,15 @@ class RigidBody {
   const std::string& name() const { return name_; }
   const TriangleMesh& mesh() const { return mesh_; }
   const BoundingBox& box() const { return box_; }
+  /// Volume enclosed, positive when the faces are oriented outward (meaningful when closed).
+  double signed_volume() const;
   /// Outward unit normal of a triangle (zero for a degenerate one).
   const Eigen::Vector3d& face_normal(int triangle) const { return face_normals_[triangle]; }
 
  private:
   void compute_normals();
   Eigen::Vector3d feature_normal(int triangle, TriangleFeature feature) const;
+  bool on_rim(int triangle, TriangleFeature feature) const;
   SurfacePoint surface_point_on(int triangle, const Eigen::Vector3d& p) const;
 
   std::string name_;
@@ -64,6 +68,8 @@ class RigidBody {
   std::vector<Eigen::Vector3d> face_normals_;
   std::vector<std::array<Eigen::Vector3d, 3>> edge_normals_;  // per triangle: 01, 12, 20
   std::vector<Eigen::Vector3d> vertex_normals_;
+  std::vector<std::array<bool, 3>> edge_on_rim_;  // per triangle: edge used by this face only
+  std::vector<unsigned char> vertex_on_rim_;
   std::unique_ptr<EmbreeScene> bvh_;
 };
 

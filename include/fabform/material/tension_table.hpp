@@ -28,11 +28,12 @@ class TensionTable {
   double energy_density(double strain) const;
 
   bool tension_only() const { return tension_only_; }
-  bool beyond_range(double strain) const { return strain > max_strain() || strain < min_strain(); }
+  /// Whether the table is extrapolated at this strain (a slack tension-only spring is not).
+  bool beyond_range(double strain) const {
+    return strain > max_strain() || (!tension_only_ && strain < min_strain());
+  }
   double min_strain() const { return points_.front().strain; }
   double max_strain() const { return points_.back().strain; }
-  /// Largest slope of any segment: the stiffest the fabric gets in this direction (N/m).
-  double max_slope() const;
   const std::vector<TablePoint>& points() const { return points_; }
   const std::string& name() const { return name_; }
 

@@ -12,7 +12,8 @@
 namespace fabform {
 
 /// The unbalanced force at a node: R with locked axes removed, and for a node in contact
-/// (normal != nullptr) whose R presses into the body, its tangential part R*.
+/// (normal != nullptr) whose R presses into the body, its part R* along the directions the
+/// node may still move in: free axes within the tangent plane.
 Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
                                  const Eigen::Vector3d* contact_normal);
 

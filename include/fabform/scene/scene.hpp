@@ -18,6 +18,7 @@ namespace fabform {
 struct BodySpec {
   std::string name;
   std::string mesh_path;
+  SourceLocation mesh_where;
   std::string units;  // as written: m, cm, mm or in
   Placement placement;
   SourceLocation where;
@@ -41,9 +42,12 @@ struct Scene {
   std::string name;
   std::string description;
   GridSpec grid;
+  SourceLocation grid_where;
   Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();  // the flat fabric's lower-left corner
   std::string warp_path;
+  SourceLocation warp_where;
   std::string weft_path;
+  SourceLocation weft_where;
   std::vector<BodySpec> bodies;
   std::vector<ConstraintSpec> constraints;
   InitialShape initial;

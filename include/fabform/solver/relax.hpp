@@ -15,16 +15,14 @@
 namespace fabform {
 
 struct RelaxOptions {
-  double C = 2.0;               // seed 003's user constant: step divisor, must exceed 1
-  double tolerance_N = 1e-3;    // e: stop when ‖V‖∞ ≤ e
+  double C = 2.0;               // seed 003's user constant: step divisor, in (1, 1e6]
+  double tolerance_N = 1e-3;    // e > 0: stop when ‖V‖∞ ≤ e
   int max_iterations = 100000;  // cap on sweeps over all nodes
   // A node gives up for this sweep once ξ has shrunk below this fraction of its first value.
   double min_step_fraction = 1e-14;
-  // A node this close to a body's surface is on it (m).
-  double contact_tolerance_m = 1e-9;
 
-  /// Why the options cannot be used, or "" when they can.
-  std::string invalid_reason() const;
+  /// Why the options cannot be used, or "" when they can; `field` gets the option's name.
+  std::string invalid_reason(std::string* field = nullptr) const;
 };
 
 /// Where each node is and which body, if any, it rests on.
@@ -41,6 +39,7 @@ struct SolverState {
   static SolverState at_start(const Model& model);
 };
 
+/// Throws std::invalid_argument when options.invalid_reason() is not empty.
 Summary relax(const Model& model, SolverState& state, const RelaxOptions& options,
               const IterationObserver& observer = {});
 

@@ -7,9 +7,9 @@
 
 namespace fabform {
 
-enum class Termination { converged, not_converged, numerical_failure, interrupted };
+enum class Termination { converged, not_converged, numerical_failure };
 
-/// "converged", "not converged", "numerical failure", "interrupted".
+/// "converged", "not converged", "numerical failure".
 std::string to_string(Termination termination);
 
 struct IterationRecord {
