@@ -5,8 +5,9 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 packages=(cmake g++ make pkg-config python3
-          libeigen3-dev libassimp-dev libembree-dev libtomlplusplus-dev nlohmann-json3-dev
-          libgtest-dev)
+          libeigen3-dev libassimp-dev libembree-dev libtomlplusplus-dev nlohmann-json3-dev libcoin-dev
+          libcgal-dev
+          libgtest-dev clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

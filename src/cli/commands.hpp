@@ -12,5 +12,6 @@ constexpr int kExitNotConverged = 3;
 constexpr int kExitNumericalFailure = 4;
 
 int run_command(const std::vector<std::string>& args);
+int check_command(const std::vector<std::string>& args);
 
 }  // namespace fabform::cli

@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "fabform/error.hpp"
+#include "fabform/geometry/mesh_report.hpp"
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/table_range.hpp"
 #include "fabform/output/progress.hpp"
@@ -93,6 +94,8 @@ std::vector<std::string> collect_warnings(const Model& model, const SolverState&
     std::snprintf(text, sizeof text, "a node lies %.3g m inside a body", check.max_penetration_m);
     warnings.emplace_back(text);
   }
+  for (const RigidBody& body : model.bodies)  // an open mold is fine; inverted normals are not
+    for (const auto& w : inspect_mesh(body.mesh()).contact_warnings()) warnings.push_back("body '" + body.name() + "': " + w);
   return warnings;
 }
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
+#include <cstdint>
 #include <stdexcept>
 
 #include "geometry/embree_scene.hpp"
@@ -51,37 +51,52 @@ RigidBody& RigidBody::operator=(RigidBody&&) noexcept = default;
 // closest feature tells inside from outside, also at edges and vertices.
 void RigidBody::compute_normals() {
   const auto& V = mesh_.vertices;
-  face_normals_.resize(mesh_.triangles.size());
+  const std::size_t count = mesh_.triangles.size();
+  face_normals_.resize(count);
   vertex_normals_.assign(V.size(), Eigen::Vector3d::Zero());
-  struct EdgeFaces {
-    Eigen::Vector3d normal_sum = Eigen::Vector3d::Zero();
-    int count = 0;
-  };
-  std::map<std::pair<int, int>, EdgeFaces> edges;
-  for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+  for (std::size_t t = 0; t < count; ++t) {
     const auto& tri = mesh_.triangles[t];
     const Eigen::Vector3d n = normalized_or_zero((V[tri[1]] - V[tri[0]]).cross(V[tri[2]] - V[tri[0]]));
     face_normals_[t] = n;
     for (int c = 0; c < 3; ++c) {
       const int a = tri[c], b = tri[(c + 1) % 3], o = tri[(c + 2) % 3];
       vertex_normals_[a] += corner_angle(V[a], V[b], V[o]) * n;
-      EdgeFaces& edge = edges[{std::min(a, b), std::max(a, b)}];
-      edge.normal_sum += n;
-      ++edge.count;
     }
   }
   for (auto& n : vertex_normals_) n = normalized_or_zero(n);
-  edge_normals_.resize(mesh_.triangles.size());
-  edge_on_rim_.assign(mesh_.triangles.size(), {false, false, false});
-  vertex_on_rim_.assign(V.size(), 0);
-  for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
-    const auto& tri = mesh_.triangles[t];
+  compute_edge_normals();
+}
+
+// Edges are matched by sorting (vertex pair, face corner) records: a million-triangle mesh
+// takes a sort of three million integers instead of as many map insertions.
+void RigidBody::compute_edge_normals() {
+  const std::size_t count = mesh_.triangles.size();
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> corners;  // (edge key, 3·face + corner)
+  corners.reserve(3 * count);
+  for (std::size_t t = 0; t < count; ++t)
     for (int c = 0; c < 3; ++c) {
-      const int a = tri[c], b = tri[(c + 1) % 3];
-      const EdgeFaces& edge = edges.at({std::min(a, b), std::max(a, b)});
-      edge_normals_[t][c] = normalized_or_zero(edge.normal_sum);
-      edge_on_rim_[t][c] = edge.count == 1;
-      if (edge.count == 1) vertex_on_rim_[a] = vertex_on_rim_[b] = 1;
+      const auto a = static_cast<std::uint64_t>(mesh_.triangles[t][c]);
+      const auto b = static_cast<std::uint64_t>(mesh_.triangles[t][(c + 1) % 3]);
+      corners.emplace_back(std::min(a, b) << 32 | std::max(a, b), static_cast<std::uint32_t>(3 * t + c));
+    }
+  std::sort(corners.begin(), corners.end());
+  edge_normals_.resize(count);
+  edge_on_rim_.assign(count, {false, false, false});
+  vertex_on_rim_.assign(mesh_.vertices.size(), 0);
+  for (std::size_t first = 0, last = 0; first < corners.size(); first = last) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (last = first; last < corners.size() && corners[last].first == corners[first].first; ++last)
+      sum += face_normals_[corners[last].second / 3];
+    const Eigen::Vector3d normal = normalized_or_zero(sum);
+    const bool rim = last - first == 1;
+    for (std::size_t k = first; k < last; ++k) {
+      const std::uint32_t t = corners[k].second / 3, c = corners[k].second % 3;
+      edge_normals_[t][c] = normal;
+      edge_on_rim_[t][c] = rim;
+    }
+    if (rim) {
+      vertex_on_rim_[static_cast<std::size_t>(corners[first].first >> 32)] = 1;
+      vertex_on_rim_[static_cast<std::size_t>(corners[first].first & 0xFFFFFFFFu)] = 1;
     }
   }
 }

@@ -4,10 +4,13 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
 #include "fabform/error.hpp"
+#include "io/declared_counts.hpp"
+#include "io/vrml_reader.hpp"
 
 namespace fabform {
 namespace {
@@ -34,17 +37,40 @@ void append_triangles(const aiMesh& mesh, TriangleMesh* out, const std::string& 
   }
 }
 
+// The file name's extension, lower case, with its dot ("" when none).
+std::string lower_extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
 }  // namespace
 
-TriangleMesh read_mesh(const std::string& path) {
+TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnings) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError({path, 0, ""}, "no such mesh file");
+  // assimp 5.2.5 has no VRML97 reader; Coin3D reads it (.wrz is gzip-compressed VRML97).
+  const std::string extension = lower_extension(path);
+  if (extension == ".wrl" || extension == ".wrz" || extension == ".vrml") return read_vrml(path, warnings);
+  // X3D goes to neither reader, because neither reads it right (checked on tests/data/vrml/x3d,
+  // counts by hand in tests/data/vrml/README.md). Coin 4.0 reads no X3D at all, XML or classic
+  // ("Not a valid Inventor file"). assimp 5.2.5 reads X3D XML but loses DEF/USE instances
+  // (ComputerKeyboard.x3d: 100 of its 2020 triangles) and turns an IndexedLineSet into faces
+  // (IndexedLineSet.x3d: 3 triangles from a line loop), and has no classic (.x3dv) reader.
+  if (extension == ".x3d" || extension == ".x3dv" || extension == ".x3db" || extension == ".x3dz" ||
+      extension == ".x3dvz")
+    throw InputError({path, 0, ""},
+                     "X3D is not read (neither assimp 5.2.5 nor Coin 4.0 reads it correctly): export the "
+                     "body as VRML97 (.wrl), STL or OBJ");
   Assimp::Importer importer;
   // Drop normals so that identical positions merge into one vertex; the BVH needs topology.
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TEXCOORDS |
                                                           aiComponent_COLORS);
-  const unsigned flags = aiProcess_RemoveComponent | aiProcess_Triangulate |
+  check_declared_counts(path);
+  // ValidateDataStructure runs first: assimp 5.2.5 can misread a file into out-of-range
+  // indices, which its later steps assert on (abort) instead of reporting.
+  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_RemoveComponent | aiProcess_Triangulate |
                          aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
                          aiProcess_SortByPType;
   const aiScene* scene = importer.ReadFile(path, flags);

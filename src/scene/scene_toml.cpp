@@ -1,6 +1,8 @@
 #include "fabform/scene/scene_toml.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "scene/scene_overrides.hpp"
 #include "scene/toml_table_reader.hpp"
@@ -164,17 +166,26 @@ Scene read_scene(const toml::table& root, const std::string& path,
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError({path, 0, ""}, "no such scene file");
+Scene parse_scene(std::string_view text, const std::string& path,
+                  const std::vector<SceneOverride>& overrides) {
   toml::table root;
   try {
-    root = toml::parse_file(path);
+    root = toml::parse(text, path);
   } catch (const toml::parse_error& error) {
     throw InputError({path, static_cast<int>(error.source().begin.line), ""},
                      std::string(error.description()));
   }
   return read_scene(root, path, apply_overrides(root, overrides));
+}
+
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError({path, 0, ""}, "no such scene file");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError({path, 0, ""}, "cannot read the scene file");
+  return parse_scene(text.str(), path, overrides);
 }
 
 }  // namespace fabform

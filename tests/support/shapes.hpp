@@ -1,6 +1,8 @@
 #pragma once
 // Analytic shapes for tests whose answers are known in closed form.
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "fabform/geometry/triangle_mesh.hpp"
 
@@ -32,6 +34,31 @@ inline TriangleMesh uv_sphere(const Eigen::Vector3d& centre, double radius, int 
     mesh.triangles.push_back({ring(rings - 1, s), south, ring(rings - 1, s + 1)});
   }
   return mesh;
+}
+
+/// The cube [0,size]³ moved by offset (vertex k at x = k&1, y = (k>>1)&1, z = (k>>2)&1),
+/// triangles counter-clockwise seen from outside.
+inline TriangleMesh cube(const Eigen::Vector3d& offset = Eigen::Vector3d::Zero(), double size = 1.0) {
+  TriangleMesh mesh;
+  for (int k = 0; k < 8; ++k)
+    mesh.vertices.push_back(offset + size * Eigen::Vector3d(k & 1, (k >> 1) & 1, (k >> 2) & 1));
+  mesh.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                    {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+  return mesh;
+}
+
+/// Reverses a triangle's winding.
+inline void flip(std::array<int, 3>* t) { std::swap((*t)[1], (*t)[2]); }
+
+/// Every triangle with its own three vertices, as STL stores them.
+inline TriangleMesh soup(const TriangleMesh& mesh) {
+  TriangleMesh out;
+  for (const auto& t : mesh.triangles) {
+    const int base = static_cast<int>(out.vertices.size());
+    for (const int v : t) out.vertices.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
+    out.triangles.push_back({base, base + 1, base + 2});
+  }
+  return out;
 }
 
 }  // namespace fabform::test

@@ -58,6 +58,7 @@ class RigidBody {
 
  private:
   void compute_normals();
+  void compute_edge_normals();
   Eigen::Vector3d feature_normal(int triangle, TriangleFeature feature) const;
   bool on_rim(int triangle, TriangleFeature feature) const;
   SurfacePoint surface_point_on(int triangle, const Eigen::Vector3d& p) const;

@@ -1,13 +1,16 @@
 #pragma once
 // Reads a rigid body's triangles from a CAD export (OBJ, STL ASCII or binary, PLY, OFF and
-// the other formats assimp reads), in the file's own units.
+// the other formats assimp reads; VRML97 .wrl/.wrz through Coin3D), in the file's own units.
 #include <string>
+#include <vector>
 
 #include "fabform/geometry/triangle_mesh.hpp"
 
 namespace fabform {
 
-/// Throws InputError naming the file when it cannot be read or holds no triangle.
-TriangleMesh read_mesh(const std::string& path);
+/// Throws InputError naming the file when it cannot be read or holds no triangle. When
+/// warnings is not null, what was skipped or is doubtful (VRML: shapes without geometry, text,
+/// two-sided faces) is appended to it, one line each.
+TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace fabform

@@ -2,6 +2,7 @@
 // Reads a scene file (TOML; the keys are documented in scenes/README.md). Parsing stays here:
 // the rest of fabform sees a validated Scene.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fabform/scene/scene.hpp"
@@ -17,6 +18,11 @@ struct SceneOverride {
 
 /// Parses "KEY=VALUE"; throws InputError naming the argument when there is no '='.
 SceneOverride parse_override(const std::string& argument);
+
+/// Parses, overrides and validates scene text; `path` names it in errors and anchors its
+/// relative paths.
+Scene parse_scene(std::string_view text, const std::string& path,
+                  const std::vector<SceneOverride>& overrides = {});
 
 /// Reads, overrides and validates a scene. Throws InputError naming the file, the line and the
 /// dotted key of the first problem (or the --set argument that caused it).
