@@ -4,12 +4,25 @@
 #include <cmath>
 #include <limits>
 #include <cstdint>
+#include <future>
 #include <stdexcept>
 
 #include "geometry/embree_scene.hpp"
 
 namespace fabform {
+
+struct EdgeCorner {
+  int high;              // the edge's upper vertex (its lower one is the bucket's)
+  std::uint32_t corner;  // 3 · triangle + corner
+  bool operator<(const EdgeCorner& other) const { return high < other.high; }
+};
+
 namespace {
+
+struct EdgeBuckets {
+  std::vector<std::size_t> start;  // per vertex, and one past the last
+  std::vector<EdgeCorner> corners;
+};
 
 void validate(const TriangleMesh& mesh) {
   if (mesh.triangles.empty()) throw std::invalid_argument("the mesh has no triangles");
@@ -33,14 +46,39 @@ Eigen::Vector3d normalized_or_zero(const Eigen::Vector3d& v) {
   return n > 0.0 ? Eigen::Vector3d(v / n) : Eigen::Vector3d::Zero();
 }
 
+// Every corner's edge (corner c of triangle t runs from vertex c to vertex c + 1), grouped by
+// the edge's lower vertex: bucket v is corners[start[v], start[v + 1]).
+EdgeBuckets bucket_edges(const std::vector<std::array<int, 3>>& triangles, std::size_t vertex_count) {
+  EdgeBuckets buckets;
+  buckets.start.assign(vertex_count + 1, 0);
+  const auto ends = [&](std::size_t t, int c) {
+    const int a = triangles[t][c], b = triangles[t][(c + 1) % 3];
+    return std::pair<std::size_t, int>(static_cast<std::size_t>(std::min(a, b)), std::max(a, b));
+  };
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int c = 0; c < 3; ++c) ++buckets.start[ends(t, c).first + 1];
+  for (std::size_t v = 0; v < vertex_count; ++v) buckets.start[v + 1] += buckets.start[v];
+  buckets.corners.resize(3 * triangles.size());
+  std::vector<std::size_t> next(buckets.start.begin(), buckets.start.end() - 1);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const auto [low, high] = ends(t, c);
+      buckets.corners[next[low]++] = {high, static_cast<std::uint32_t>(3 * t + static_cast<std::size_t>(c))};
+    }
+  return buckets;
+}
+
 }  // namespace
 
 RigidBody::RigidBody(std::string name, TriangleMesh mesh)
     : name_(std::move(name)), mesh_(std::move(mesh)) {
   validate(mesh_);
   box_ = bounding_box(mesh_.vertices);
+  // The BVH and the pseudo-normals need only the mesh: build them side by side (a large
+  // body's set-up is mostly these two).
+  auto bvh = std::async(std::launch::async, [this] { return std::make_unique<EmbreeScene>(mesh_.vertices, mesh_.triangles); });
   compute_normals();
-  bvh_ = std::make_unique<EmbreeScene>(mesh_.vertices, mesh_.triangles);
+  bvh_ = bvh.get();
 }
 
 RigidBody::~RigidBody() = default;
@@ -67,37 +105,35 @@ void RigidBody::compute_normals() {
   compute_edge_normals();
 }
 
-// Edges are matched by sorting (vertex pair, face corner) records: a million-triangle mesh
-// takes a sort of three million integers instead of as many map insertions.
+// Edges are matched through their lower vertex: corners are bucketed by it (a counting sort,
+// linear time), and each bucket, a handful of edges, is sorted by the upper vertex. A full sort
+// of three million edge records took most of a million-triangle body's set-up.
 void RigidBody::compute_edge_normals() {
-  const std::size_t count = mesh_.triangles.size();
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> corners;  // (edge key, 3·face + corner)
-  corners.reserve(3 * count);
-  for (std::size_t t = 0; t < count; ++t)
-    for (int c = 0; c < 3; ++c) {
-      const auto a = static_cast<std::uint64_t>(mesh_.triangles[t][c]);
-      const auto b = static_cast<std::uint64_t>(mesh_.triangles[t][(c + 1) % 3]);
-      corners.emplace_back(std::min(a, b) << 32 | std::max(a, b), static_cast<std::uint32_t>(3 * t + c));
-    }
-  std::sort(corners.begin(), corners.end());
-  edge_normals_.resize(count);
-  edge_on_rim_.assign(count, {false, false, false});
+  const EdgeBuckets buckets = bucket_edges(mesh_.triangles, mesh_.vertices.size());
+  edge_normals_.resize(mesh_.triangles.size());
+  edge_on_rim_.assign(mesh_.triangles.size(), {false, false, false});
   vertex_on_rim_.assign(mesh_.vertices.size(), 0);
-  for (std::size_t first = 0, last = 0; first < corners.size(); first = last) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (last = first; last < corners.size() && corners[last].first == corners[first].first; ++last)
-      sum += face_normals_[corners[last].second / 3];
-    const Eigen::Vector3d normal = normalized_or_zero(sum);
-    const bool rim = last - first == 1;
-    for (std::size_t k = first; k < last; ++k) {
-      const std::uint32_t t = corners[k].second / 3, c = corners[k].second % 3;
-      edge_normals_[t][c] = normal;
-      edge_on_rim_[t][c] = rim;
+  std::vector<EdgeCorner> bucket;
+  for (std::size_t low = 0; low < mesh_.vertices.size(); ++low) {
+    bucket.assign(buckets.corners.begin() + buckets.start[low], buckets.corners.begin() + buckets.start[low + 1]);
+    std::sort(bucket.begin(), bucket.end());
+    for (std::size_t first = 0, last = 0; first < bucket.size(); first = last) {
+      for (last = first; last < bucket.size() && bucket[last].high == bucket[first].high;) ++last;
+      set_edge(bucket.data() + first, bucket.data() + last);
+      if (last - first == 1) vertex_on_rim_[low] = vertex_on_rim_[static_cast<std::size_t>(bucket[first].high)] = 1;
     }
-    if (rim) {
-      vertex_on_rim_[static_cast<std::size_t>(corners[first].first >> 32)] = 1;
-      vertex_on_rim_[static_cast<std::size_t>(corners[first].first & 0xFFFFFFFFu)] = 1;
-    }
+  }
+}
+
+// One edge, walked by the corners [first, last): its normal is the normalised sum of its
+// faces' normals; it is on the rim when one face has it.
+void RigidBody::set_edge(const EdgeCorner* first, const EdgeCorner* last) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const EdgeCorner* e = first; e != last; ++e) sum += face_normals_[e->corner / 3];
+  const Eigen::Vector3d normal = normalized_or_zero(sum);
+  for (const EdgeCorner* e = first; e != last; ++e) {
+    edge_normals_[e->corner / 3][e->corner % 3] = normal;
+    edge_on_rim_[e->corner / 3][e->corner % 3] = last - first == 1;
   }
 }
 

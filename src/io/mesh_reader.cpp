@@ -7,8 +7,10 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include "fabform/error.hpp"
+#include "io/binary_stl.hpp"
 #include "io/declared_counts.hpp"
 #include "io/vrml_reader.hpp"
 
@@ -35,6 +37,11 @@ void append_triangles(const aiMesh& mesh, TriangleMesh* out, const std::string& 
     }
     out->triangles.push_back(triangle);
   }
+}
+
+TriangleMesh with_triangles(TriangleMesh mesh, const std::string& path) {
+  if (mesh.triangles.empty()) throw InputError({path, 0, ""}, "the mesh has no triangles");
+  return mesh;
 }
 
 // The file name's extension, lower case, with its dot ("" when none).
@@ -68,6 +75,7 @@ TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnin
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TEXCOORDS |
                                                           aiComponent_COLORS);
   check_declared_counts(path);
+  if (extension == ".stl" && is_binary_stl(path)) return with_triangles(read_binary_stl(path), path);
   // ValidateDataStructure runs first: assimp 5.2.5 can misread a file into out-of-range
   // indices, which its later steps assert on (abort) instead of reporting.
   const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_RemoveComponent | aiProcess_Triangulate |
@@ -77,8 +85,7 @@ TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnin
   if (!scene) throw InputError({path, 0, ""}, std::string("cannot read mesh: ") + importer.GetErrorString());
   TriangleMesh mesh;
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) append_triangles(*scene->mMeshes[m], &mesh, path);
-  if (mesh.triangles.empty()) throw InputError({path, 0, ""}, "the mesh has no triangles");
-  return mesh;
+  return with_triangles(std::move(mesh), path);
 }
 
 }  // namespace fabform

@@ -15,6 +15,7 @@
 namespace fabform {
 
 class EmbreeScene;
+struct EdgeCorner;  // rigid_body.cpp: one corner's edge, while edges are matched
 
 /// A point on the body's surface with its outward normal. For a query point p, distance is
 /// |p − point| and signed_distance is negative when p is inside the body (never when the
@@ -59,6 +60,7 @@ class RigidBody {
  private:
   void compute_normals();
   void compute_edge_normals();
+  void set_edge(const EdgeCorner* first, const EdgeCorner* last);
   Eigen::Vector3d feature_normal(int triangle, TriangleFeature feature) const;
   bool on_rim(int triangle, TriangleFeature feature) const;
   SurfacePoint surface_point_on(int triangle, const Eigen::Vector3d& p) const;
