@@ -6,7 +6,9 @@
 
 #include <sstream>
 
+#include "fabform/model/equilibrium.hpp"
 #include "fabform/scene/scene_toml.hpp"
+#include "fabform/solver/relax.hpp"
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 
@@ -123,6 +125,40 @@ TEST_F(ModelBuilder, InvertedMeshIsNamedAsSuch) {
   dir.write("sphere.obj", to_obj(sphere));
   const InputError e = error(scene(""));
   EXPECT_NE(std::string(e.what()).find("faces point inward"), std::string::npos) << e.what();
+}
+
+// A mold and a second body in one scene, each in its own units and placement: two spheres
+// whose tops poke 1 cm through the clamped fabric's plane, one written in millimetres and
+// moved, one in centimetres, scaled and turned about its own centre line. The fabric, lifted
+// clear of both, comes to rest on both and enters neither.
+TEST_F(ModelBuilder, TwoBodiesInTheirOwnUnitsBothHoldTheFabric) {
+  dir.write("left_mm.obj", to_obj(test::uv_sphere({0, 0, 0}, 20.0, 20, 40)));
+  dir.write("right_cm.obj", to_obj(test::uv_sphere({0, 0, 0}, 1.0, 20, 40)));
+  const std::string text =
+      "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [20, 20]\nwarp = \"table.csv\"\nweft = \"table.csv\"\n"
+      "[[body]]\nname = \"left\"\nmesh = \"left_mm.obj\"\nunits = \"mm\"\ntranslation_m = [0.03, 0.05, -0.01]\n"
+      "[[body]]\nname = \"right\"\nmesh = \"right_cm.obj\"\nunits = \"cm\"\nscale = 2.0\n"
+      "rotation_deg = [0, 0, 90]\ntranslation_m = [0.07, 0.05, -0.01]\n"
+      "[[constraint]]\nnodes = \"perimeter\"\n[initial]\nshape = \"lift\"\nheight_m = 0.03\n";
+  const Model model = build(text);
+  ASSERT_EQ(model.bodies.size(), 2u);
+  for (const RigidBody& body : model.bodies) {  // both are 4 cm spheres centred 1 cm below the plane
+    EXPECT_NEAR(body.box().max.z(), 0.01, 1e-12) << body.name();
+    EXPECT_NEAR(body.box().max.x() - body.box().min.x(), 0.04, 1e-3) << body.name();
+  }
+  SolverState state = SolverState::at_start(model);
+  RelaxOptions options;
+  options.tolerance_N = 1e-4;
+  const Summary summary = relax(model, state, options);
+  ASSERT_TRUE(summary.converged()) << summary.message;
+  int on_body[2] = {0, 0};
+  for (const NodeContact& c : state.contact)
+    if (c.active()) ++on_body[c.body];
+  EXPECT_GT(on_body[0], 0);
+  EXPECT_GT(on_body[1], 0);
+  const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-8);
+  EXPECT_LE(check.max_residual_N, options.tolerance_N);
+  EXPECT_LE(check.max_penetration_m, 1e-9);  // the projections' rounding, far below a facet
 }
 
 }  // namespace
