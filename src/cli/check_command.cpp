@@ -3,7 +3,6 @@
 // 2 with one line on stderr when it cannot be read or used.
 #include <cstdio>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +12,7 @@
 #include "fabform/geometry/mesh_report.hpp"
 #include "fabform/geometry/placement.hpp"
 #include "fabform/io/mesh_reader.hpp"
+#include "fabform/io/obj_text.hpp"
 #include "fabform/output/result_writer.hpp"
 
 namespace fabform::cli {
@@ -131,15 +131,6 @@ std::vector<std::string> remarks(const MeshReport& r) {
 // ---------------------------------------------------------------------------------------------
 // Repair
 
-std::string to_obj(const TriangleMesh& mesh, const std::string& source) {
-  std::ostringstream obj;
-  obj.precision(17);
-  obj << "# repaired by fabform check from " << source << " (coordinates in its units)\n";
-  for (const auto& v : mesh.vertices) obj << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
-  for (const auto& t : mesh.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
-  return obj.str();
-}
-
 int repair(const CheckArguments& args, const TriangleMesh& mesh, double metres_per_unit) {
   const RepairResult repaired = repair_mesh(mesh);
   std::printf("repair:\n");
@@ -154,7 +145,8 @@ int repair(const CheckArguments& args, const TriangleMesh& mesh, double metres_p
     std::fprintf(stderr, "fabform: error: %s: even after repair, %s; nothing written\n", args.mesh.c_str(), why.c_str());
     return kExitBadInput;
   }
-  write_file_atomically(*args.repair_out, to_obj(repaired.mesh, args.mesh));
+  write_file_atomically(*args.repair_out,
+                        obj_text(repaired.mesh, "repaired by fabform check from " + args.mesh + " (coordinates in its units)"));
   std::printf("written: %s (OBJ, in the input's units)\n", args.repair_out->c_str());
   return kExitDone;
 }

@@ -1,12 +1,10 @@
 // The command-line contract of DESIGN.md, exercised on the real binary: exit statuses, one-line
 // errors that name the file, and output folders that are complete or untouched.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <algorithm>
-#include <fstream>
-#include <sstream>
 
+#include "fabform/io/obj_text.hpp"
+#include "support/cli.hpp"
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
@@ -14,41 +12,18 @@
 namespace fabform {
 namespace {
 
-struct Outcome {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
+using test::line_count;
+using test::Outcome;
+using test::slurp;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-Outcome fabform(const test::TempDir& dir, const std::string& arguments) {
-  const std::string command = "cd '" + dir.root().string() + "' && '" + test::fabform_binary() +
-                              "' " + arguments + " >stdout.txt 2>stderr.txt";
-  const int raw = std::system(command.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir.path("stdout.txt")),
-          slurp(dir.path("stderr.txt"))};
-}
-
-int line_count(const std::string& text) {
-  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-}
+using test::run_fabform;
 
 // A small scene whose answer takes a moment: a clamped, pre-lifted square over a sphere.
 class RunCommand : public ::testing::Test {
  protected:
   void SetUp() override {
     dir.write("table.csv", "# linear test table\nstrain,tension_N_per_m\n0,0\n1,500\n");
-    std::ostringstream obj;
-    const TriangleMesh sphere = test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40);
-    for (const auto& v : sphere.vertices) obj << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
-    for (const auto& t : sphere.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
-    dir.write("sphere.obj", obj.str());
+    dir.write("sphere.obj", obj_text(test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40)));
     dir.write("scene.toml",
               "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [10, 10]\n"
               "warp = \"table.csv\"\nweft = \"table.csv\"\n"
@@ -62,7 +37,7 @@ class RunCommand : public ::testing::Test {
 };
 
 TEST_F(RunCommand, ConvergedRunWritesEveryResult) {
-  const Outcome o = fabform(dir, "run scene.toml --out out");
+  const Outcome o = run_fabform(dir, "run scene.toml --out out");
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.err.find("results in out"), std::string::npos) << o.err;
   const std::string json = slurp(dir.path("out/result.json"));
@@ -82,7 +57,7 @@ TEST_F(RunCommand, ConvergedRunWritesEveryResult) {
 }
 
 TEST_F(RunCommand, IterationCapExitsThreeAndSaysSo) {
-  const Outcome o = fabform(dir, "run scene.toml --out out --max-iter 2 --tol 1e-9");
+  const Outcome o = run_fabform(dir, "run scene.toml --out out --max-iter 2 --tol 1e-9");
   EXPECT_EQ(o.status, 3) << o.err;
   const std::string json = slurp(dir.path("out/result.json"));
   EXPECT_NE(json.find("\"converged\": false"), std::string::npos);
@@ -91,9 +66,22 @@ TEST_F(RunCommand, IterationCapExitsThreeAndSaysSo) {
 }
 
 TEST_F(RunCommand, SetOverridesAnySceneValue) {
-  const Outcome o = fabform(dir, "run scene.toml --out out --set fabric.divisions=[6,6]");
+  const Outcome o = run_fabform(dir, "run scene.toml --out out --set fabric.divisions=[6,6]");
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_NE(slurp(dir.path("out/result.json")).find("\"nodes\": 49"), std::string::npos);
+}
+
+// A body with a triangle facing the wrong way, far below the fabric, still forms it; the run
+// warns, because contact near such a triangle takes outside for inside.
+TEST_F(RunCommand, BodyWithAFlippedTriangleIsWarnedAbout) {
+  TriangleMesh sphere = test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40);
+  test::flip(&sphere.triangles.back());  // at the south pole
+  dir.write("sphere.obj", obj_text(sphere));
+  const Outcome o = run_fabform(dir, "run scene.toml --out out");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const std::string json = slurp(dir.path("out/result.json"));
+  EXPECT_NE(json.find("inconsistent orientation: 3 edges"), std::string::npos) << json;
+  EXPECT_NE(json.find("--repair"), std::string::npos) << json;
 }
 
 // Bad input: exit status 2, one line naming the file (and line), nothing written.
@@ -110,7 +98,7 @@ class RunCommandBadInput : public RunCommand, public ::testing::WithParamInterfa
 TEST_P(RunCommandBadInput, ExitsTwoWithOneLineAndWritesNothing) {
   const BadRun& bad = GetParam();
   if (std::string(bad.file_to_write).size() > 0) dir.write(bad.file_to_write, bad.content);
-  const Outcome o = fabform(dir, bad.arguments);
+  const Outcome o = run_fabform(dir, bad.arguments);
   EXPECT_EQ(o.status, 2) << o.err;
   EXPECT_EQ(line_count(o.err), 1) << o.err;
   EXPECT_NE(o.err.find(bad.expected_in_message), std::string::npos) << o.err;
@@ -133,24 +121,24 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& case_info) { return std::string(case_info.param.name); });
 
 TEST_F(RunCommand, BadInputLeavesAnExistingFolderUntouched) {
-  ASSERT_EQ(fabform(dir, "run scene.toml --out out").status, 0);
+  ASSERT_EQ(run_fabform(dir, "run scene.toml --out out").status, 0);
   const std::string before = slurp(dir.path("out/result.json"));
   dir.write("table.csv", "strain,tension_N_per_m\n0,0\n");
-  EXPECT_EQ(fabform(dir, "run scene.toml --out out").status, 2);
+  EXPECT_EQ(run_fabform(dir, "run scene.toml --out out").status, 2);
   EXPECT_EQ(slurp(dir.path("out/result.json")), before);
 }
 
 TEST(Cli, SolversListsRelax) {
   test::TempDir dir;
-  const Outcome o = fabform(dir, "solvers");
+  const Outcome o = run_fabform(dir, "solvers");
   EXPECT_EQ(o.status, 0);
   EXPECT_EQ(o.out, "relax\n");
 }
 
 TEST(Cli, UnknownCommandIsAUsageError) {
   test::TempDir dir;
-  EXPECT_EQ(fabform(dir, "frobnicate").status, 2);
-  EXPECT_EQ(fabform(dir, "").status, 2);
+  EXPECT_EQ(run_fabform(dir, "frobnicate").status, 2);
+  EXPECT_EQ(run_fabform(dir, "").status, 2);
 }
 
 }  // namespace

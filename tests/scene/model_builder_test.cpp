@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
 
+#include "fabform/io/obj_text.hpp"
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/scene/scene_toml.hpp"
 #include "fabform/solver/relax.hpp"
@@ -15,20 +15,12 @@
 namespace fabform {
 namespace {
 
-std::string to_obj(const TriangleMesh& mesh) {
-  std::ostringstream out;
-  out.precision(17);
-  for (const auto& v : mesh.vertices) out << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
-  for (const auto& t : mesh.triangles) out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
-  return out.str();
-}
-
 // A 10 × 10 cm fabric lifted 2 cm over a 3 cm sphere whose top reaches 1 cm.
 class ModelBuilder : public ::testing::Test {
  protected:
   void SetUp() override {
     dir.write("table.csv", "strain,tension_N_per_m\n0,0\n1,500\n");
-    dir.write("sphere.obj", to_obj(test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40)));
+    dir.write("sphere.obj", obj_text(test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40)));
   }
   std::string scene(const std::string& extra, const std::string& lift = "0.02") const {
     return "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [10, 10]\n"
@@ -77,7 +69,7 @@ TEST_F(ModelBuilder, FabricStartingInsideTheBody) {
 
 TEST_F(ModelBuilder, SpringThroughTheBody) {
   // Nodes clear of a thin sphere but a spring crossing it: a 1 mm sphere between two nodes.
-  dir.write("sphere.obj", to_obj(test::uv_sphere({0.025, 0.05, 0.0}, 0.001, 8, 16)));
+  dir.write("sphere.obj", obj_text(test::uv_sphere({0.025, 0.05, 0.0}, 0.001, 8, 16)));
   std::string text = scene("");
   text.replace(text.find("shape = \"lift\""), 14, "shape = \"flat\"");
   const InputError e = error(text);
@@ -122,7 +114,7 @@ TEST_F(ModelBuilder, CoordinatesBeyondAThousandKilometresAreAUnitMistake) {
 TEST_F(ModelBuilder, InvertedMeshIsNamedAsSuch) {
   TriangleMesh sphere = test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40);
   for (auto& t : sphere.triangles) std::swap(t[1], t[2]);
-  dir.write("sphere.obj", to_obj(sphere));
+  dir.write("sphere.obj", obj_text(sphere));
   const InputError e = error(scene(""));
   EXPECT_NE(std::string(e.what()).find("faces point inward"), std::string::npos) << e.what();
 }
@@ -132,8 +124,8 @@ TEST_F(ModelBuilder, InvertedMeshIsNamedAsSuch) {
 // moved, one in centimetres, scaled and turned about its own centre line. The fabric, lifted
 // clear of both, comes to rest on both and enters neither.
 TEST_F(ModelBuilder, TwoBodiesInTheirOwnUnitsBothHoldTheFabric) {
-  dir.write("left_mm.obj", to_obj(test::uv_sphere({0, 0, 0}, 20.0, 20, 40)));
-  dir.write("right_cm.obj", to_obj(test::uv_sphere({0, 0, 0}, 1.0, 20, 40)));
+  dir.write("left_mm.obj", obj_text(test::uv_sphere({0, 0, 0}, 20.0, 20, 40)));
+  dir.write("right_cm.obj", obj_text(test::uv_sphere({0, 0, 0}, 1.0, 20, 40)));
   const std::string text =
       "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [20, 20]\nwarp = \"table.csv\"\nweft = \"table.csv\"\n"
       "[[body]]\nname = \"left\"\nmesh = \"left_mm.obj\"\nunits = \"mm\"\ntranslation_m = [0.03, 0.05, -0.01]\n"
