@@ -107,10 +107,10 @@ int run(const RunArguments& args) {
   check_writable(dir);
   std::fprintf(stderr, "fabform: scene %s, %d nodes, %zu bodies, solver %s, e = %g N\n",
                scene.name.c_str(), model.node_count(), model.bodies.size(),
-               scene.solver.name.c_str(), scene.solver.relax.tolerance_N);
+               scene.solver.name.c_str(), scene.solver.tolerance_N());
   Progress progress(stderr);
   SolverState state = SolverState::at_start(model);
-  const Summary summary = relax(model, state, scene.solver.relax, [&](const IterationRecord& r) {
+  const Summary summary = solve(model, state, scene.solver, [&](const IterationRecord& r) {
     if (!args.quiet) progress.update(r);
   });
   if (!args.quiet) progress.finish();

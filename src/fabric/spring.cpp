@@ -21,17 +21,24 @@ Eigen::Vector3d spring_force_on_a(const Eigen::Vector3d& xa, const Eigen::Vector
   return (spring.width * table.tension(strain) / length) * d;
 }
 
-Eigen::Matrix3d spring_stiffness(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
-                                 const Spring& spring, const TensionTable& table) {
+Eigen::Matrix3d SpringStiffness::matrix() const {
+  const Eigen::Matrix3d uu = direction * direction.transpose();
+  return axial * uu + transverse * (Eigen::Matrix3d::Identity() - uu);
+}
+
+SpringStiffness spring_stiffness_parts(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
+                                       const Spring& spring, const TensionTable& table) {
   const Eigen::Vector3d d = xb - xa;
   const double length = d.norm();
-  if (length == 0.0) return Eigen::Matrix3d::Zero();
+  if (length == 0.0) return {Eigen::Vector3d::UnitX(), 0.0, 0.0};
   const double strain = length / spring.rest_length - 1.0;
-  const Eigen::Vector3d u = d / length;
-  const double axial = spring.width * table.slope(strain) / spring.rest_length;
-  const double transverse = spring.width * table.tension(strain) / length;
-  const Eigen::Matrix3d uu = u * u.transpose();
-  return axial * uu + transverse * (Eigen::Matrix3d::Identity() - uu);
+  return {d / length, spring.width * table.slope(strain) / spring.rest_length,
+          spring.width * table.tension(strain) / length};
+}
+
+Eigen::Matrix3d spring_stiffness(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
+                                 const Spring& spring, const TensionTable& table) {
+  return spring_stiffness_parts(xa, xb, spring, table).matrix();
 }
 
 }  // namespace fabform

@@ -1,8 +1,10 @@
 #include "fabform/model/stretch_forces.hpp"
 
 #include <cmath>
+#include <cstddef>
 
 #include "fabform/fabric/spring.hpp"
+#include "fabform/thread_count.hpp"
 
 namespace fabform {
 
@@ -32,11 +34,17 @@ double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x
 }
 
 double stretch_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
+  const std::vector<Spring>& springs = model.grid.springs();
+  const auto count = static_cast<std::ptrdiff_t>(springs.size());
   double energy = 0.0;
-  for (const Spring& spring : model.grid.springs())
+  // A static schedule sums in the same order on every run with the same thread count.
+#pragma omp parallel for schedule(static) reduction(+ : energy) if (count >= kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    const Spring& spring = springs[static_cast<std::size_t>(i)];
     energy += spring_energy(x[static_cast<std::size_t>(spring.a)],
                             x[static_cast<std::size_t>(spring.b)], spring,
                             model.table(spring.direction));
+  }
   return energy;
 }
 

@@ -3,7 +3,7 @@
 namespace fabform {
 
 const std::vector<std::string>& solver_names() {
-  static const std::vector<std::string> names = {"relax"};
+  static const std::vector<std::string> names = {"relax", "newton"};
   return names;
 }
 

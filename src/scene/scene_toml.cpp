@@ -121,21 +121,29 @@ void read_initial(TableReader r, Scene* scene) {
   r.reject_unknown({"shape", "height_m", "axis_m", "radius_m", "facing_deg", "span_deg"});
 }
 
+// tolerance_N and max_iterations are every solver's; the other keys belong to one solver each
+// and are validated whichever solver runs, so a scene stays valid when --solver switches it.
 void read_solver(TableReader r, Scene* scene) {
   SolverSpec& s = scene->solver;
   s.name = r.text("name", "relax");
   bool known = false;
   for (const auto& name : solver_names()) known = known || name == s.name;
   if (!known) r.fail("name", "unknown solver '" + s.name + "' (see `fabform solvers`)");
-  s.relax.tolerance_N = r.number("tolerance_N", s.relax.tolerance_N);
-  s.relax.max_iterations =
-      checked_int(r, "max_iterations", r.integer("max_iterations", s.relax.max_iterations), 0,
-                  1'000'000'000);
+  s.relax.tolerance_N = s.newton.tolerance_N = r.number("tolerance_N", s.relax.tolerance_N);
+  if (r.has("max_iterations"))
+    s.relax.max_iterations = s.newton.max_iterations = checked_int(
+        r, "max_iterations", r.integer("max_iterations", 0), 0, 1'000'000'000);
   s.relax.C = r.number("C", s.relax.C);
+  s.newton.regularization = r.number("regularization", s.newton.regularization);
+  s.newton.armijo = r.number("armijo", s.newton.armijo);
+  s.newton.max_backtracks = checked_int(
+      r, "max_backtracks", r.integer("max_backtracks", s.newton.max_backtracks), 1, 200);
   s.threads = checked_int(r, "threads", r.integer("threads", 1), 1, 1024);
   std::string field;
   if (const std::string why = s.relax.invalid_reason(&field); !why.empty()) r.fail(field, why);
-  r.reject_unknown({"name", "tolerance_N", "max_iterations", "C", "threads"});
+  if (const std::string why = s.newton.invalid_reason(&field); !why.empty()) r.fail(field, why);
+  r.reject_unknown({"name", "tolerance_N", "max_iterations", "C", "regularization", "armijo",
+                    "max_backtracks", "threads"});
 }
 
 void read_output(TableReader r, Scene* scene) {

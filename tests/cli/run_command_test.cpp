@@ -128,11 +128,11 @@ TEST_F(RunCommand, BadInputLeavesAnExistingFolderUntouched) {
   EXPECT_EQ(slurp(dir.path("out/result.json")), before);
 }
 
-TEST(Cli, SolversListsRelax) {
+TEST(Cli, SolversListsEverySolver) {
   test::TempDir dir;
   const Outcome o = run_fabform(dir, "solvers");
   EXPECT_EQ(o.status, 0);
-  EXPECT_EQ(o.out, "relax\n");
+  EXPECT_EQ(o.out, "relax\nnewton\n");
 }
 
 TEST(Cli, UnknownCommandIsAUsageError) {

@@ -119,7 +119,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadValue{"tolerance_N = 1e-3", "tolerance_N = -1", "solver.tolerance_N", 9},
                       BadValue{"tolerance_N = 1e-3", "tolerance_N = inf", "solver.tolerance_N", 9},
                       BadValue{"tolerance_N = 1e-3", "C = 1.0", "solver.C", 9},
-                      BadValue{"tolerance_N = 1e-3", "name = \"newton\"", "solver.name", 9},
+                      BadValue{"tolerance_N = 1e-3", "name = \"simplex\"", "solver.name", 9},
                       BadValue{"tolerance_N = 1e-3", "max_iterations = -5", "solver.max_iterations", 9},
                       BadValue{"tolerance_N = 1e-3", "threads = 0", "solver.threads", 9}),
     [](const auto& case_info) {

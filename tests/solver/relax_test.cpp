@@ -6,28 +6,14 @@
 #include <cmath>
 
 #include "fabform/model/equilibrium.hpp"
+#include "support/clamped_fabric.hpp"
 #include "support/shapes.hpp"
 
 namespace fabform {
 namespace {
 
-TensionTable linear_table(double stiffness_N_per_m) {
-  return TensionTable({{0.0, 0.0}, {1.0, stiffness_N_per_m}}, "linear");
-}
-
-// A 10 × 10 cm fabric with the given divisions, perimeter locked in every axis, stretched in
-// its plane by `prestretch` (a clamped membrane needs tension to resist moving out of plane).
-Model clamped_fabric(int divisions, double prestretch = 0.0) {
-  FabricGrid grid({0.1, 0.1, divisions, divisions});
-  std::vector<AxisMask> locks(static_cast<std::size_t>(grid.node_count()), 0);
-  std::vector<Eigen::Vector3d> x(static_cast<std::size_t>(grid.node_count()));
-  const Eigen::Vector3d centre(0.05, 0.05, 0.0);
-  for (int k = 0; k < grid.node_count(); ++k) {
-    x[static_cast<std::size_t>(k)] = centre + (1.0 + prestretch) * (grid.rest_position(k) - centre);
-    if (grid.on_perimeter(k)) locks[static_cast<std::size_t>(k)] = kLockX | kLockY | kLockZ;
-  }
-  return Model{grid, linear_table(500.0), linear_table(500.0), locks, {}, x};
-}
+using test::clamped_fabric;
+using test::lift_interior;
 
 // Relaxes from the model's start to `tolerance_N`, which it must reach; returns the final
 // state's equilibrium recomputed from positions alone.
@@ -40,11 +26,6 @@ EquilibriumReport relax_to(const Model& model, double tolerance_N, SolverState* 
   const EquilibriumReport check = measure_equilibrium(model, state->x, 1e-8);
   EXPECT_LE(check.max_residual_N, tolerance_N);
   return check;
-}
-
-void lift_interior(Model& model, double height) {
-  for (int k = 0; k < model.node_count(); ++k)
-    if (!model.grid.on_perimeter(k)) model.start[static_cast<std::size_t>(k)].z() = height;
 }
 
 TEST(RelaxOptions, RejectsBadValues) {

@@ -36,6 +36,15 @@ inline TriangleMesh uv_sphere(const Eigen::Vector3d& centre, double radius, int 
   return mesh;
 }
 
+/// uv_sphere with its poles on the y axis, so that a fabric laid on top meets regular facets
+/// rather than the slivers round a pole.
+inline TriangleMesh sideways_sphere(const Eigen::Vector3d& centre, double radius, int rings,
+                                    int segments) {
+  TriangleMesh mesh = uv_sphere(Eigen::Vector3d::Zero(), radius, rings, segments);
+  for (Eigen::Vector3d& v : mesh.vertices) v = centre + Eigen::Vector3d(v.x(), -v.z(), v.y());
+  return mesh;
+}
+
 /// The cube [0,size]³ moved by offset (vertex k at x = k&1, y = (k>>1)&1, z = (k>>2)&1),
 /// triangles counter-clockwise seen from outside.
 inline TriangleMesh cube(const Eigen::Vector3d& offset = Eigen::Vector3d::Zero(), double size = 1.0) {

@@ -20,6 +20,19 @@ double spring_energy(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb, const
 Eigen::Vector3d spring_force_on_a(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
                                   const Spring& spring, const TensionTable& table);
 
+/// The spring's stiffness K = ∂²E/∂xa² split along and across its direction u:
+/// K = axial·uuᵀ + transverse·(I − uuᵀ), axial = w·T'(ε)/L, transverse = w·T(ε)/l.
+struct SpringStiffness {
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  // u, from a to b
+  double axial = 0.0;       // N/m
+  double transverse = 0.0;  // N/m
+  Eigen::Matrix3d matrix() const;
+};
+
+/// Both parts zero for coincident nodes, where the spring has no direction.
+SpringStiffness spring_stiffness_parts(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
+                                       const Spring& spring, const TensionTable& table);
+
 /// ∂²E/∂xa² (3 × 3); the full Hessian is [[K, −K], [−K, K]]. Exact, not projected.
 Eigen::Matrix3d spring_stiffness(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
                                  const Spring& spring, const TensionTable& table);

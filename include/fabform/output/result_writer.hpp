@@ -9,7 +9,7 @@
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/model.hpp"
 #include "fabform/scene/scene.hpp"
-#include "fabform/solver/relax.hpp"
+#include "fabform/solver/solver_state.hpp"
 #include "fabform/solver/summary.hpp"
 
 namespace fabform {

@@ -11,7 +11,7 @@
 #include "fabform/fabric/initial_shape.hpp"
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/placement.hpp"
-#include "fabform/solver/relax.hpp"
+#include "fabform/solver/solve.hpp"
 
 namespace fabform {
 
@@ -29,12 +29,6 @@ struct ConstraintSpec {
   std::string nodes_text;  // the selector as written, for reports
   AxisMask axes = kLockX | kLockY | kLockZ;
   SourceLocation where;
-};
-
-struct SolverSpec {
-  std::string name = "relax";
-  RelaxOptions relax;
-  int threads = 1;
 };
 
 struct Scene {

@@ -5,11 +5,9 @@
 // along its tangent plane and is projected back onto the surface; it leaves when R points out
 // of the body. Locked axes do not move. Stops when ‖V‖∞ ≤ e (Eq. 6) or at the iteration cap.
 #include <string>
-#include <vector>
-
-#include <Eigen/Core>
 
 #include "fabform/model/model.hpp"
+#include "fabform/solver/solver_state.hpp"
 #include "fabform/solver/summary.hpp"
 
 namespace fabform {
@@ -23,20 +21,6 @@ struct RelaxOptions {
 
   /// Why the options cannot be used, or "" when they can; `field` gets the option's name.
   std::string invalid_reason(std::string* field = nullptr) const;
-};
-
-/// Where each node is and which body, if any, it rests on.
-struct NodeContact {
-  int body = -1;  // index into Model::bodies; -1 when free
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-  bool active() const { return body >= 0; }
-};
-
-struct SolverState {
-  std::vector<Eigen::Vector3d> x;
-  std::vector<NodeContact> contact;
-
-  static SolverState at_start(const Model& model);
 };
 
 /// Throws std::invalid_argument when options.invalid_reason() is not empty.

@@ -36,4 +36,13 @@ struct Summary {
 /// Called after each iteration (and once for the start, iteration 0).
 using IterationObserver = std::function<void(const IterationRecord&)>;
 
+/// Appends an iteration to the summary's history and totals, tells the observer, and sets the
+/// termination when the run stops here: a non-finite residual, ‖V‖∞ ≤ e, or `max_iterations`
+/// reached. Returns whether it stops. `worst_node` is where ‖V‖∞ is attained.
+bool record_iteration(Summary& summary, const IterationRecord& record, int worst_node,
+                      int max_iterations, const IterationObserver& observer);
+
+/// The message for people that says why a run stopped with its termination.
+std::string stop_message(const Summary& summary);
+
 }  // namespace fabform

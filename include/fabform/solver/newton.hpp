@@ -1,0 +1,34 @@
+#pragma once
+// A fast quasi-static solver reaching relax's equilibrium: Newton's method on the fabric's total
+// stretch energy Π(x) = Σ w·L·∫₀^ε T. Each spring's stiffness is projected positive
+// semi-definite; the linear system, in each node's free directions (locked axes and the normal
+// of the body a node presses on eliminated), is solved by a sparse Cholesky factorisation (CHOLMOD)
+// regularised by μ·I; a backtracking line search on the energy moves the nodes as relax does
+// (a node that would enter a body stops on it, a node on a body slides and is projected back,
+// and leaves when its force points out). Progress is seed 003's ‖V‖∞, as relax measures it.
+#include <string>
+
+#include "fabform/model/model.hpp"
+#include "fabform/solver/solver_state.hpp"
+#include "fabform/solver/summary.hpp"
+
+namespace fabform {
+
+struct NewtonOptions {
+  double tolerance_N = 1e-3;  // e > 0: stop when ‖V‖∞ ≤ e
+  int max_iterations = 200;   // cap on Newton steps (a converging run takes tens)
+  // μ added to the matrix's diagonal, relative to its mean diagonal entry: keeps it definite
+  // where springs are slack (zero stiffness). Raised ×10 while the step is poor, lowered back.
+  double regularization = 1e-8;
+  double armijo = 1e-4;      // sufficient decrease: Π(x + Δx) ≤ Π(x) + armijo · ∇Π·Δx
+  int max_backtracks = 60;   // step halvings before the line search is declared stalled
+
+  /// Why the options cannot be used, or "" when they can; `field` gets the option's name.
+  std::string invalid_reason(std::string* field = nullptr) const;
+};
+
+/// Throws std::invalid_argument when options.invalid_reason() is not empty.
+Summary newton(const Model& model, SolverState& state, const NewtonOptions& options,
+               const IterationObserver& observer = {});
+
+}  // namespace fabform

@@ -1,0 +1,29 @@
+#pragma once
+// One entry point for every solver: the settings a scene's [solver] section gives, and the
+// call that runs the solver they name.
+#include <string>
+
+#include "fabform/model/model.hpp"
+#include "fabform/solver/newton.hpp"
+#include "fabform/solver/relax.hpp"
+#include "fabform/solver/solver_state.hpp"
+#include "fabform/solver/summary.hpp"
+
+namespace fabform {
+
+struct SolverSpec {
+  std::string name = "relax";  // one of solver_names()
+  RelaxOptions relax;          // used when name is "relax"
+  NewtonOptions newton;        // used when name is "newton"
+  int threads = 1;
+
+  /// e of the solver the spec names.
+  double tolerance_N() const { return name == "newton" ? newton.tolerance_N : relax.tolerance_N; }
+};
+
+/// Runs the named solver from `state`. Throws std::invalid_argument for an unknown name or
+/// options the solver refuses.
+Summary solve(const Model& model, SolverState& state, const SolverSpec& spec,
+              const IterationObserver& observer = {});
+
+}  // namespace fabform

@@ -1,0 +1,39 @@
+#pragma once
+// What every solver works on and hands back: where each node is and which body, if any, it
+// rests on; and seed 003's measure ‖V‖∞ of that state (Eq. 6), which every solver reports so
+// that their histories compare one to one.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fabform/model/model.hpp"
+
+namespace fabform {
+
+struct NodeContact {
+  int body = -1;  // index into Model::bodies; -1 when free
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  bool active() const { return body >= 0; }
+};
+
+struct SolverState {
+  std::vector<Eigen::Vector3d> x;
+  std::vector<NodeContact> contact;
+
+  static SolverState at_start(const Model& model);
+};
+
+/// V_k of one node placed at `at` (the others where `state` has them), in `contact`.
+double node_residual(const Model& model, const SolverState& state, int node,
+                     const Eigen::Vector3d& at, const NodeContact& contact);
+
+struct StateResidual {
+  double max_residual_N = 0.0;  // ‖V‖∞, NaN when a node is broken
+  int worst_node = -1;          // where it is attained (or the first broken node)
+  int contact_nodes = 0;        // nodes the state holds on a body
+};
+
+/// ‖V‖∞ with contact as the state records it (not found by geometry: see measure_equilibrium).
+StateResidual measure_state(const Model& model, const SolverState& state);
+
+}  // namespace fabform

@@ -1,0 +1,83 @@
+#include "fabform/solver/contact_move.hpp"
+
+#include <limits>
+#include <optional>
+
+namespace fabform {
+namespace {
+
+// A contact node moved on the tangent plane is projected back onto the surface (Fig. 8).
+// The node was on the surface, so the surface is within the step's length of `to`.
+NodeMove slide(const Model& model, const Eigen::Vector3d& to, double step_length, int body) {
+  const RigidBody& surface = model.bodies[static_cast<std::size_t>(body)];
+  const auto s = surface.closest_within(to, 2.0 * step_length + 1e-6 * surface.box().diagonal());
+  const SurfacePoint projected = s ? *s : surface.closest(to);
+  return {projected.point, NodeContact{body, projected.normal}};
+}
+
+// Entry points are snapped onto their triangle, which can move them by a rounding error;
+// a held coordinate must not move at all.
+Eigen::Vector3d keep_locked(Eigen::Vector3d point, const Eigen::Vector3d& reference,
+                            AxisMask locks) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (locks & (1 << axis)) point[axis] = reference[axis];
+  return point;
+}
+
+// A node held on some axes cannot be projected to the closest surface point: that would move
+// it along them. It returns to the surface along the free part of the normal instead, or, if
+// the surface fell away further than the step, it is free.
+NodeMove slide_locked(const Model& model, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                      const NodeContact& contact, AxisMask locks) {
+  const Eigen::Vector3d along = remove_locked(contact.normal, locks).normalized();
+  const double reach = 2.0 * (to - from).norm();
+  const RigidBody& body = model.bodies[static_cast<std::size_t>(contact.body)];
+  const auto s = body.first_entry(to + reach * along, to - reach * along);
+  if (!s) return {to, NodeContact{}};
+  return {keep_locked(s->point, to, locks), NodeContact{contact.body, s->normal}};
+}
+
+// Embree's single-precision rays can slip through a shared edge (by ~1e-7 of the body's
+// size), and a ray starting on the surface may not count it as entered; a move that ends
+// inside the body, no deeper than the move is long plus such a slip, entered it too and stops
+// on the surface: at the closest point, or, for a node held on some axes, where the free part
+// of the normal leads back out (keep_locked then restores the held coordinates).
+std::optional<SurfacePoint> entry_point(const RigidBody& body, const Eigen::Vector3d& from,
+                                        const Eigen::Vector3d& to, AxisMask locks) {
+  if (auto entry = body.first_entry(from, to)) return entry;
+  const double reach = (to - from).norm() + 1e-6 * body.box().diagonal();
+  const auto s = body.closest_within(to, reach);
+  if (!s || s->signed_distance >= 0.0) return std::nullopt;
+  if (locks == 0) return s;
+  const Eigen::Vector3d along = remove_locked(s->normal, locks);
+  if (along.squaredNorm() == 0.0) return std::nullopt;
+  return body.first_entry(to + 2.0 * reach * along.normalized(), to);
+}
+
+// A free node moves straight; if the move enters a body, it stops on the surface there.
+NodeMove fly(const Model& model, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+             AxisMask locks) {
+  NodeMove result{to, NodeContact{}};
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const auto entry = entry_point(model.bodies[b], from, to, locks);
+    if (entry && (entry->point - from).norm() < nearest) {
+      nearest = (entry->point - from).norm();
+      result = {keep_locked(entry->point, to, locks), NodeContact{static_cast<int>(b), entry->normal}};
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+NodeMove move_node(const Model& model, int node, const Eigen::Vector3d& from,
+                   const Eigen::Vector3d& step, const NodeContact& contact) {
+  const AxisMask locks = model.locks[static_cast<std::size_t>(node)];
+  const Eigen::Vector3d to = from + remove_locked(step, locks);
+  if (!contact.active()) return fly(model, from, to, locks);
+  if (locks == 0) return slide(model, to, (to - from).norm(), contact.body);
+  return slide_locked(model, from, to, contact, locks);
+}
+
+}  // namespace fabform

@@ -1,0 +1,58 @@
+#include "solver/free_directions.hpp"
+
+namespace fabform {
+namespace {
+
+// Gram–Schmidt over the free axes with the free part of the normal removed first. The kept
+// directions span the free axes' plane within the tangent plane; a projected axis shorter than
+// 1e-3 is (to rounding) a combination of those already kept and is dropped.
+int node_basis(AxisMask locks, const NodeContact& contact, Eigen::Matrix3d* basis) {
+  Eigen::Vector3d normal = contact.active() ? remove_locked(contact.normal, locks)
+                                            : Eigen::Vector3d::Zero();
+  if (normal.squaredNorm() > 0.0) normal.normalize();
+  basis->setZero();
+  int count = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (locks & (1 << axis)) continue;
+    Eigen::Vector3d v = Eigen::Vector3d::Unit(axis);
+    v -= v.dot(normal) * normal;
+    for (int c = 0; c < count; ++c) v -= v.dot(basis->col(c)) * basis->col(c);
+    if (v.norm() > 1e-3) basis->col(count++) = v.normalized();
+  }
+  return count;
+}
+
+}  // namespace
+
+FreeDirections free_directions(const Model& model, const std::vector<NodeContact>& contact) {
+  const auto n = static_cast<std::size_t>(model.node_count());
+  FreeDirections d{std::vector<int>(n + 1, 0), std::vector<Eigen::Matrix3d>(n)};
+  for (std::size_t k = 0; k < n; ++k)
+    d.offset[k + 1] = d.offset[k] + node_basis(model.locks[k], contact[k], &d.basis[k]);
+  return d;
+}
+
+std::vector<Eigen::Vector3d> node_steps(const FreeDirections& directions,
+                                        const Eigen::VectorXd& unknowns) {
+  std::vector<Eigen::Vector3d> steps(directions.basis.size());
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    Eigen::Vector3d local = Eigen::Vector3d::Zero();
+    const int node = static_cast<int>(k);
+    for (int c = 0; c < directions.count(node); ++c) local[c] = unknowns[directions.offset[k] + c];
+    steps[k] = directions.of(node) * local;
+  }
+  return steps;
+}
+
+Eigen::VectorXd reduced_forces(const FreeDirections& directions,
+                               const std::vector<Eigen::Vector3d>& forces) {
+  Eigen::VectorXd reduced(directions.unknowns());
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const int node = static_cast<int>(k);
+    const Eigen::Vector3d local = directions.of(node).transpose() * forces[k];
+    for (int c = 0; c < directions.count(node); ++c) reduced[directions.offset[k] + c] = local[c];
+  }
+  return reduced;
+}
+
+}  // namespace fabform

@@ -1,0 +1,35 @@
+#pragma once
+// The directions each node may move in during a Newton step: its free axes, less the normal of
+// the body it presses on. Newton's unknowns are the node displacements along them, so locked
+// axes and contact normals are eliminated from the system rather than penalised: a held
+// coordinate cannot drift and a node on a body is not pushed into it.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fabform/model/model.hpp"
+#include "fabform/solver/solver_state.hpp"
+
+namespace fabform {
+
+struct FreeDirections {
+  std::vector<int> offset;             // first unknown of each node; the last entry is the total
+  std::vector<Eigen::Matrix3d> basis;  // per node: orthonormal columns, count(k) of them used
+
+  int count(int k) const { return offset[k + 1] - offset[k]; }
+  int unknowns() const { return offset.back(); }
+  /// Unused columns are zero, so basis * (reduced step) needs no size checks.
+  const Eigen::Matrix3d& of(int k) const { return basis[static_cast<std::size_t>(k)]; }
+};
+
+FreeDirections free_directions(const Model& model, const std::vector<NodeContact>& contact);
+
+/// Node displacements (3 per node, zero along eliminated directions) from Newton's unknowns.
+std::vector<Eigen::Vector3d> node_steps(const FreeDirections& directions,
+                                        const Eigen::VectorXd& unknowns);
+
+/// The node forces in Newton's unknowns: each node's force on its free directions.
+Eigen::VectorXd reduced_forces(const FreeDirections& directions,
+                               const std::vector<Eigen::Vector3d>& forces);
+
+}  // namespace fabform

@@ -1,0 +1,186 @@
+#include "fabform/solver/newton.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "fabform/model/stretch_forces.hpp"
+#include "fabform/solver/contact_move.hpp"
+#include "solver/free_directions.hpp"
+#include "solver/reduced_hessian.hpp"
+#include "solver/sparse_cholesky.hpp"
+#include "fabform/thread_count.hpp"
+
+namespace fabform {
+
+std::string NewtonOptions::invalid_reason(std::string* field) const {
+  const auto bad = [&](const char* name, const char* why) {
+    if (field) *field = name;
+    return std::string(why);
+  };
+  if (!(std::isfinite(tolerance_N) && tolerance_N > 0.0))
+    return bad("tolerance_N", "must be a positive, finite force");
+  if (max_iterations < 0) return bad("max_iterations", "must not be negative");
+  if (!(regularization > 0.0 && regularization <= 1.0))
+    return bad("regularization", "must be in (0, 1]");
+  if (!(armijo > 0.0 && armijo < 0.5)) return bad("armijo", "must be in (0, 0.5)");
+  if (!(max_backtracks >= 1 && max_backtracks <= 200))
+    return bad("max_backtracks", "must be between 1 and 200");
+  return "";
+}
+
+namespace {
+
+// Beyond this regularisation (relative to the mean diagonal) the step is a vanishing gradient
+// step; a matrix that still fails is broken, not ill-conditioned.
+constexpr double kMaxRegularization = 1e8;
+
+std::vector<Eigen::Vector3d> node_forces(const Model& model, const std::vector<Eigen::Vector3d>& x) {
+  std::vector<Eigen::Vector3d> forces(x.size());
+#pragma omp parallel for schedule(static) if (model.node_count() >= kMinParallelItems)
+  for (int k = 0; k < model.node_count(); ++k) forces[static_cast<std::size_t>(k)] = node_force(model, x, k);
+  return forces;
+}
+
+// Seed 003 §3.2.2: a node on a body whose force (on its free axes) points out of it leaves it.
+void release_pulling_nodes(const Model& model, const std::vector<Eigen::Vector3d>& forces,
+                           SolverState& state) {
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    NodeContact& contact = state.contact[k];
+    if (contact.active() && remove_locked(forces[k], model.locks[k]).dot(contact.normal) > 0.0)
+      contact = NodeContact{};
+  }
+}
+
+// ∇Π·Δx = −Σ R_k·Δx_k: the energy change a move predicts to first order.
+double first_order_change(const std::vector<Eigen::Vector3d>& forces,
+                          const std::vector<Eigen::Vector3d>& from,
+                          const std::vector<Eigen::Vector3d>& to) {
+  double change = 0.0;
+  for (std::size_t k = 0; k < forces.size(); ++k) change -= forces[k].dot(to[k] - from[k]);
+  return change;
+}
+
+class NewtonStep {
+ public:
+  NewtonStep(const Model& model, SolverState& state, const NewtonOptions& options)
+      : model_(model), state_(state), options_(options), mu_(options.regularization) {}
+
+  /// One Newton step from the current state, whose ‖V‖∞ is `residual`; false when no step along
+  /// the Newton direction is acceptable (the state is then unchanged).
+  bool take(double residual) {
+    const std::vector<Eigen::Vector3d> forces = node_forces(model_, state_.x);
+    release_pulling_nodes(model_, forces, state_);
+    const FreeDirections directions = free_directions(model_, state_.contact);
+    if (directions.unknowns() == 0) return false;
+    const auto step = solve(reduced_hessian(model_, state_.x, directions),
+                            reduced_forces(directions, forces));
+    if (!step) return false;
+    const auto alpha = line_search(node_steps(directions, *step), forces, residual);
+    if (!alpha) return false;
+    // Levenberg–Marquardt-like: a full step earns less regularisation, a short one more.
+    if (*alpha == 1.0) mu_ = std::max(mu_ / 10.0, options_.regularization);
+    else if (*alpha < 0.1) mu_ = std::min(mu_ * 10.0, kMaxRegularization);
+    return true;
+  }
+
+ private:
+  // Solves (H + μ·s·I) δ = f, s the mean diagonal of H; raises μ until δ is a descent direction.
+  std::optional<Eigen::VectorXd> solve(const Eigen::SparseMatrix<double>& h,
+                                       const Eigen::VectorXd& f) {
+    const double mean = h.diagonal().mean();
+    const double scale = mean > 0.0 ? mean : 1.0;
+    for (; mu_ <= kMaxRegularization; mu_ *= 10.0) {
+      Eigen::SparseMatrix<double> m = h;
+      m.diagonal().array() += mu_ * scale;
+      if (!cholesky_.factorize(std::move(m))) continue;
+      Eigen::VectorXd delta = cholesky_.solve(f);
+      if (delta.allFinite() && delta.dot(f) > 0.0) return delta;
+    }
+    mu_ = kMaxRegularization;
+    return std::nullopt;
+  }
+
+  SolverState moved(const std::vector<Eigen::Vector3d>& steps, double alpha) const {
+    SolverState trial = state_;
+// Dynamic: a node on a body costs more than a free one.
+#pragma omp parallel for schedule(dynamic, 256) if (model_.node_count() >= kMinParallelItems)
+    for (int k = 0; k < model_.node_count(); ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      const NodeMove m = move_node(model_, k, state_.x[i], alpha * steps[i], state_.contact[i]);
+      trial.x[i] = m.x;
+      trial.contact[i] = m.contact;
+    }
+    return trial;
+  }
+
+  // Backtracking from the full step. Near the solution the energy's change falls below its
+  // rounding (~1e-11 of the total); there a step is judged by whether it lowers ‖V‖∞ instead.
+  std::optional<double> line_search(const std::vector<Eigen::Vector3d>& steps,
+                                    const std::vector<Eigen::Vector3d>& forces, double residual) {
+    const double e0 = stretch_energy(model_, state_.x);
+    const double noise = 1e-11 * std::abs(e0);
+    double alpha = 1.0;
+    for (int t = 0; t <= options_.max_backtracks; ++t, alpha *= 0.5) {
+      SolverState trial = moved(steps, alpha);
+      const double change = stretch_energy(model_, trial.x) - e0;
+      const double predicted = first_order_change(forces, state_.x, trial.x);
+      const bool decreases = change < 0.0 && change <= options_.armijo * std::min(predicted, 0.0);
+      if (decreases || (std::abs(change) <= noise &&
+                        measure_state(model_, trial).max_residual_N < residual)) {
+        state_ = std::move(trial);
+        return alpha;
+      }
+    }
+    return std::nullopt;
+  }
+
+  const Model& model_;
+  SolverState& state_;
+  const NewtonOptions& options_;
+  double mu_;  // current regularisation, relative to the mean diagonal
+  SparseCholesky cholesky_;
+};
+
+std::string stall_message(const Summary& s) {
+  std::ostringstream text;
+  text.precision(3);
+  text << "line search stalled after " << s.iterations << " iterations with ||V||inf = "
+       << s.residual_N << " N > e = " << s.tolerance_N
+       << " N: no step along the Newton direction lowers the energy (worst node " << s.worst_node
+       << ")";
+  return text.str();
+}
+
+}  // namespace
+
+Summary newton(const Model& model, SolverState& state, const NewtonOptions& options,
+               const IterationObserver& observer) {
+  if (const std::string why = options.invalid_reason(); !why.empty())
+    throw std::invalid_argument("newton: " + why);
+  using Clock = std::chrono::steady_clock;
+  const auto started = Clock::now();
+  NewtonStep step(model, state, options);
+  Summary summary;
+  summary.solver = "newton";
+  summary.tolerance_N = options.tolerance_N;
+  for (int iteration = 0;; ++iteration) {
+    if (iteration > 0 && !step.take(summary.residual_N)) {
+      summary.termination = Termination::not_converged;
+      summary.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+      summary.message = stall_message(summary);
+      return summary;
+    }
+    const StateResidual m = measure_state(model, state);
+    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
+    if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
+  }
+  summary.message = stop_message(summary);
+  return summary;
+}
+
+}  // namespace fabform

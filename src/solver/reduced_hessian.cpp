@@ -1,0 +1,56 @@
+#include "solver/reduced_hessian.hpp"
+
+#include <cstddef>
+
+#include "fabform/model/spring_energy.hpp"
+#include "fabform/thread_count.hpp"
+
+namespace fabform {
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+// Block (row node, column node) of the reduced matrix; on the diagonal only its lower half.
+void add_block(const FreeDirections& d, int row, int col, const Eigen::Matrix3d& stiffness,
+               Triplets* out) {
+  const Eigen::Matrix3d block = d.of(row).transpose() * stiffness * d.of(col);
+  const int r0 = d.offset[static_cast<std::size_t>(row)];
+  const int c0 = d.offset[static_cast<std::size_t>(col)];
+  for (int r = 0; r < d.count(row); ++r)
+    for (int c = 0; c < d.count(col); ++c)
+      if (r0 + r >= c0 + c) out->emplace_back(r0 + r, c0 + c, block(r, c));
+}
+
+// A spring between a and b adds [[K, −K], [−K, K]]; the coupling block goes below the diagonal.
+void add_spring(const FreeDirections& d, int a, int b, const Eigen::Matrix3d& k, Triplets* out) {
+  add_block(d, a, a, k, out);
+  add_block(d, b, b, k, out);
+  const bool b_below = d.offset[static_cast<std::size_t>(b)] > d.offset[static_cast<std::size_t>(a)];
+  if (b_below) add_block(d, b, a, -k, out);
+  else add_block(d, a, b, -k, out);
+}
+
+}  // namespace
+
+Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
+                                            const std::vector<Eigen::Vector3d>& x,
+                                            const FreeDirections& directions) {
+  Triplets triplets;
+  triplets.reserve(model.grid.springs().size() * 21 + static_cast<std::size_t>(directions.unknowns()));
+  for (int u = 0; u < directions.unknowns(); ++u) triplets.emplace_back(u, u, 0.0);
+  const std::vector<Spring>& springs = model.grid.springs();
+  std::vector<Eigen::Matrix3d> stiffness(springs.size());
+#pragma omp parallel for schedule(static) if (springs.size() >= kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(springs.size()); ++i) {
+    const Spring& s = springs[static_cast<std::size_t>(i)];
+    stiffness[static_cast<std::size_t>(i)] = projected_spring_stiffness(
+        x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)], s, model.table(s.direction));
+  }
+  for (std::size_t i = 0; i < springs.size(); ++i)
+    add_spring(directions, springs[i].a, springs[i].b, stiffness[i], &triplets);
+  Eigen::SparseMatrix<double> hessian(directions.unknowns(), directions.unknowns());
+  hessian.setFromTriplets(triplets.begin(), triplets.end());
+  return hessian;
+}
+
+}  // namespace fabform

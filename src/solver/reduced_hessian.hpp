@@ -1,0 +1,20 @@
+#pragma once
+// Newton's matrix: the Hessian of the fabric's stretch energy with every spring's stiffness
+// projected positive semi-definite, in the nodes' free directions (free_directions.hpp).
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "fabform/model/model.hpp"
+#include "solver/free_directions.hpp"
+
+namespace fabform {
+
+/// Lower triangle only (what Eigen's SimplicialLDLT reads); every diagonal entry is stored,
+/// so a regularisation can be added to it in place.
+Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
+                                            const std::vector<Eigen::Vector3d>& x,
+                                            const FreeDirections& directions);
+
+}  // namespace fabform

@@ -1,0 +1,17 @@
+#include "fabform/solver/solve.hpp"
+
+#include <stdexcept>
+
+#include "fabform/thread_count.hpp"
+
+namespace fabform {
+
+Summary solve(const Model& model, SolverState& state, const SolverSpec& spec,
+              const IterationObserver& observer) {
+  use_threads(spec.threads);
+  if (spec.name == "relax") return relax(model, state, spec.relax, observer);
+  if (spec.name == "newton") return newton(model, state, spec.newton, observer);
+  throw std::invalid_argument("unknown solver '" + spec.name + "'");
+}
+
+}  // namespace fabform

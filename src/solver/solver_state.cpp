@@ -1,0 +1,41 @@
+#include "fabform/solver/solver_state.hpp"
+
+#include <cmath>
+
+#include "fabform/model/equilibrium.hpp"
+#include "fabform/model/stretch_forces.hpp"
+#include "fabform/thread_count.hpp"
+
+namespace fabform {
+
+SolverState SolverState::at_start(const Model& model) {
+  return {model.start, std::vector<NodeContact>(model.start.size())};
+}
+
+double node_residual(const Model& model, const SolverState& state, int node,
+                     const Eigen::Vector3d& at, const NodeContact& contact) {
+  const Eigen::Vector3d r = node_force_at(model, state.x, node, at);
+  return unbalanced_force(r, model.locks[static_cast<std::size_t>(node)],
+                          contact.active() ? &contact.normal : nullptr)
+      .norm();
+}
+
+StateResidual measure_state(const Model& model, const SolverState& state) {
+  std::vector<double> residual(state.x.size());
+#pragma omp parallel for schedule(static) if (model.node_count() >= kMinParallelItems)
+  for (int k = 0; k < model.node_count(); ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    residual[i] = node_residual(model, state, k, state.x[i], state.contact[i]);
+  }
+  StateResidual m;
+  for (int k = 0; k < model.node_count(); ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double v = residual[i];
+    m.contact_nodes += state.contact[i].active() ? 1 : 0;
+    if (std::isnan(v)) return {v, k, m.contact_nodes};  // a broken node decides the run
+    if (v > m.max_residual_N || m.worst_node < 0) m.max_residual_N = v, m.worst_node = k;
+  }
+  return m;
+}
+
+}  // namespace fabform

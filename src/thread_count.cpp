@@ -1,0 +1,17 @@
+#include "fabform/thread_count.hpp"
+
+#include <dlfcn.h>
+#include <omp.h>
+
+namespace fabform {
+
+void use_threads(int n) {
+  omp_set_num_threads(n);
+  // OpenBLAS keeps its own thread pool, sized from the cores unless told otherwise. The BLAS
+  // is whichever Debian's alternatives chose, so OpenBLAS's setter is looked up, not linked.
+  using Setter = void (*)(int);
+  if (auto set = reinterpret_cast<Setter>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+    set(n);
+}
+
+}  // namespace fabform
