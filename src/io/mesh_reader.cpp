@@ -7,23 +7,60 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "fabform/error.hpp"
 #include "io/binary_stl.hpp"
-#include "io/declared_counts.hpp"
+#include "io/mesh_file_check.hpp"
 #include "io/vrml_reader.hpp"
 
 namespace fabform {
 namespace {
 
-// Appends the triangles of one assimp mesh; points and lines carry no surface and are skipped.
-void append_triangles(const aiMesh& mesh, TriangleMesh* out, const std::string& path) {
+// A name or message from a file or from assimp, fit for a one-line error or warning: printable
+// ASCII only (anything else as '?'), at most 200 bytes.
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size() && i < 200; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    out += c >= 0x20 && c < 0x7F ? static_cast<char>(c) : '?';
+  }
+  return text.size() > 200 ? out + "..." : out;
+}
+
+// What a read left out, for the warnings and for the error when nothing is left.
+struct Skipped {
+  unsigned points_and_lines = 0;  // OBJ p/l records, and faces of fewer than three corners ("f 1 2")
+  std::vector<std::string> empty_meshes;
+
+  std::vector<std::string> lines() const {
+    std::vector<std::string> out;
+    if (points_and_lines == 1)
+      out.push_back("skipped 1 point, line or face of fewer than three corners: it has no surface");
+    else if (points_and_lines > 1)
+      out.push_back("skipped " + std::to_string(points_and_lines) +
+                    " points, lines and faces of fewer than three corners: they have no surface");
+    for (const std::string& name : empty_meshes)
+      out.push_back("skipped a mesh without faces" + (name.empty() ? std::string() : " ('" + one_line(name) + "')"));
+    return out;
+  }
+};
+
+// Appends the triangles of one assimp mesh; points and lines carry no surface and are skipped,
+// and so are the vertices of a mesh that holds nothing else.
+void append_triangles(const aiMesh& mesh, TriangleMesh* out, const std::string& path, Skipped* skipped) {
+  unsigned triangles = 0;
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) triangles += mesh.mFaces[f].mNumIndices == 3;
+  skipped->points_and_lines += mesh.mNumFaces - triangles;
+  if (triangles == 0) return;
   const int base = static_cast<int>(out->vertices.size());
   for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
     const aiVector3D& p = mesh.mVertices[v];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw InputError({path, 0, ""}, "vertex " + std::to_string(v) + " is not finite");
+      throw InputError({path, 0, ""}, "a vertex coordinate is not finite (NaN or infinity)");
     out->vertices.emplace_back(p.x, p.y, p.z);
   }
   for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
@@ -39,9 +76,79 @@ void append_triangles(const aiMesh& mesh, TriangleMesh* out, const std::string& 
   }
 }
 
-TriangleMesh with_triangles(TriangleMesh mesh, const std::string& path) {
-  if (mesh.triangles.empty()) throw InputError({path, 0, ""}, "the mesh has no triangles");
-  return mesh;
+TriangleMesh with_triangles(TriangleMesh mesh, const std::string& path, const Skipped& skipped) {
+  if (!mesh.triangles.empty()) return mesh;
+  std::string why = "the mesh has no triangles";
+  for (const std::string& line : skipped.lines()) why += "; " + line;
+  throw InputError({path, 0, ""}, why);
+}
+
+unsigned primitive_type(unsigned corners) {
+  switch (corners) {
+    case 1: return aiPrimitiveType_POINT;
+    case 2: return aiPrimitiveType_LINE;
+    case 3: return aiPrimitiveType_TRIANGLE;
+    default: return aiPrimitiveType_POLYGON;  // more than three: faces of none are gone by now
+  }
+}
+
+// A PLY face of no corners ("0" in its list) comes out of assimp 5.2.5 as a face without
+// indices, which ValidateDataStructure refuses, failing the whole file; it holds nothing, so it
+// is dropped and counted with the points and lines.
+void drop_faces_without_corners(const aiScene& scene, Skipped* skipped) {
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    aiMesh& mesh = *scene.mMeshes[m];
+    unsigned kept = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      if (mesh.mFaces[f].mNumIndices == 0) {
+        ++skipped->points_and_lines;
+        continue;
+      }
+      if (kept != f) std::swap(mesh.mFaces[kept], mesh.mFaces[f]);  // the empty one moves back, freed with the array
+      ++kept;
+    }
+    mesh.mNumFaces = kept;
+  }
+}
+
+// assimp 5.2.5's OBJ importer files a face of one or two corners ("f 1 2") as a polygon, and
+// ValidateDataStructure then refuses the whole file; recounted from the faces, such a face is
+// skipped with a warning instead, as a PLY or OFF face of two corners is.
+void recount_primitive_types(const aiScene& scene) {
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    aiMesh& mesh = *scene.mMeshes[m];
+    unsigned types = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) types |= primitive_type(mesh.mFaces[f].mNumIndices);
+    mesh.mPrimitiveTypes = types;
+  }
+}
+
+void renumber_meshes(aiNode* node, const std::vector<int>& new_index) {
+  unsigned kept = 0;
+  for (unsigned i = 0; i < node->mNumMeshes; ++i)
+    if (new_index[node->mMeshes[i]] >= 0) node->mMeshes[kept++] = static_cast<unsigned>(new_index[node->mMeshes[i]]);
+  node->mNumMeshes = kept;
+  for (unsigned c = 0; c < node->mNumChildren; ++c) renumber_meshes(node->mChildren[c], new_index);
+}
+
+// An ASCII STL may hold an empty "solid ... endsolid" beside real ones (assimp's own
+// triangle_with_empty_solid.stl); assimp 5.2.5 makes it a mesh without vertices, which
+// ValidateDataStructure refuses. It holds nothing, so it is dropped and named in a warning.
+void drop_empty_meshes(aiScene* scene, Skipped* skipped) {
+  std::vector<int> new_index(scene->mNumMeshes, -1);
+  unsigned kept = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    aiMesh* mesh = scene->mMeshes[m];
+    if (mesh->mNumVertices > 0 && mesh->mNumFaces > 0) {
+      new_index[m] = static_cast<int>(kept);
+      scene->mMeshes[kept++] = mesh;
+      continue;
+    }
+    skipped->empty_meshes.emplace_back(mesh->mName.C_Str());
+    delete mesh;
+  }
+  scene->mNumMeshes = kept;
+  if (scene->mRootNode) renumber_meshes(scene->mRootNode, new_index);
 }
 
 // The file name's extension, lower case, with its dot ("" when none).
@@ -49,6 +156,39 @@ std::string lower_extension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return extension;
+}
+
+// Reads the file, or the mended bytes check_mesh_file gave in its place (same format).
+TriangleMesh read_with_assimp(const std::string& path, const std::optional<std::string>& mended,
+                              std::vector<std::string>* warnings) {
+  Assimp::Importer importer;
+  // Drop normals so that identical positions merge into one vertex; the BVH needs topology.
+  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TEXCOORDS |
+                                                          aiComponent_COLORS);
+  // Read without post-processing first, to mend what assimp itself would then refuse.
+  const std::string extension = lower_extension(path);  // mended bytes come only from .ply and .obj
+  const std::string hint = extension.empty() ? extension : extension.substr(1);
+  const aiScene* read = mended ? importer.ReadFileFromMemory(mended->data(), mended->size(), 0, hint.c_str())
+                               : importer.ReadFile(path, 0);
+  if (!read) throw InputError({path, 0, ""}, "cannot read mesh: " + one_line(importer.GetErrorString()));
+  Skipped skipped;
+  // The importer owns the scene; we mend it.
+  drop_faces_without_corners(*read, &skipped);
+  drop_empty_meshes(const_cast<aiScene*>(read), &skipped);
+  recount_primitive_types(*read);
+  // ValidateDataStructure runs first: assimp 5.2.5 can misread a file into out-of-range
+  // indices, which its later steps assert on (abort) instead of reporting.
+  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_RemoveComponent | aiProcess_Triangulate |
+                         aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                         aiProcess_SortByPType;
+  const aiScene* scene = read->mNumMeshes > 0 ? importer.ApplyPostProcessing(flags) : read;
+  if (!scene) throw InputError({path, 0, ""}, "cannot read mesh: " + one_line(importer.GetErrorString()));
+  TriangleMesh mesh;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) append_triangles(*scene->mMeshes[m], &mesh, path, &skipped);
+  mesh = with_triangles(std::move(mesh), path, skipped);
+  if (warnings)
+    for (const std::string& line : skipped.lines()) warnings->push_back(line);
+  return mesh;
 }
 
 }  // namespace
@@ -70,22 +210,9 @@ TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnin
     throw InputError({path, 0, ""},
                      "X3D is not read (neither assimp 5.2.5 nor Coin 4.0 reads it correctly): export the "
                      "body as VRML97 (.wrl), STL or OBJ");
-  Assimp::Importer importer;
-  // Drop normals so that identical positions merge into one vertex; the BVH needs topology.
-  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TEXCOORDS |
-                                                          aiComponent_COLORS);
-  check_declared_counts(path);
-  if (extension == ".stl" && is_binary_stl(path)) return with_triangles(read_binary_stl(path), path);
-  // ValidateDataStructure runs first: assimp 5.2.5 can misread a file into out-of-range
-  // indices, which its later steps assert on (abort) instead of reporting.
-  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_RemoveComponent | aiProcess_Triangulate |
-                         aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                         aiProcess_SortByPType;
-  const aiScene* scene = importer.ReadFile(path, flags);
-  if (!scene) throw InputError({path, 0, ""}, std::string("cannot read mesh: ") + importer.GetErrorString());
-  TriangleMesh mesh;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) append_triangles(*scene->mMeshes[m], &mesh, path);
-  return with_triangles(std::move(mesh), path);
+  const std::optional<std::string> mended = check_mesh_file(path);
+  if (extension == ".stl" && is_binary_stl(path)) return with_triangles(read_binary_stl(path), path, {});
+  return read_with_assimp(path, mended, warnings);
 }
 
 }  // namespace fabform
