@@ -1,6 +1,7 @@
 #pragma once
-// How many threads a solve may use: OpenMP's loops over nodes and springs, CHOLMOD's OpenMP
-// parts, and the OpenBLAS threads under CHOLMOD's dense kernels all follow one setting.
+// How many threads a solve may use: OpenMP's loops over nodes and springs and the OpenBLAS
+// threads under CHOLMOD's dense kernels follow one setting (CHOLMOD's own OpenMP loops run on
+// the calling thread: see sparse_cholesky.cpp).
 
 namespace fabform {
 

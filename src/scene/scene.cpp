@@ -3,7 +3,7 @@
 namespace fabform {
 
 const std::vector<std::string>& solver_names() {
-  static const std::vector<std::string> names = {"relax", "newton"};
+  static const std::vector<std::string> names = {"relax", "dynamic", "newton"};
   return names;
 }
 

@@ -129,21 +129,28 @@ void read_solver(TableReader r, Scene* scene) {
   bool known = false;
   for (const auto& name : solver_names()) known = known || name == s.name;
   if (!known) r.fail("name", "unknown solver '" + s.name + "' (see `fabform solvers`)");
-  s.relax.tolerance_N = s.newton.tolerance_N = r.number("tolerance_N", s.relax.tolerance_N);
+  s.relax.tolerance_N = s.newton.tolerance_N = s.dynamic.tolerance_N =
+      r.number("tolerance_N", s.relax.tolerance_N);
   if (r.has("max_iterations"))
-    s.relax.max_iterations = s.newton.max_iterations = checked_int(
+    s.relax.max_iterations = s.newton.max_iterations = s.dynamic.max_iterations = checked_int(
         r, "max_iterations", r.integer("max_iterations", 0), 0, 1'000'000'000);
   s.relax.C = r.number("C", s.relax.C);
   s.newton.regularization = r.number("regularization", s.newton.regularization);
   s.newton.armijo = r.number("armijo", s.newton.armijo);
   s.newton.max_backtracks = checked_int(
       r, "max_backtracks", r.integer("max_backtracks", s.newton.max_backtracks), 1, 200);
+  s.dynamic.areal_density_kg_m2 = r.number("areal_density_kg_m2", s.dynamic.areal_density_kg_m2);
+  if (r.has("damping")) s.dynamic.damping = r.number("damping", 0.0);
+  s.dynamic.time_step_fraction = r.number("time_step_fraction", s.dynamic.time_step_fraction);
+  s.dynamic.stretch_limit = r.number("stretch_limit", s.dynamic.stretch_limit);
   s.threads = checked_int(r, "threads", r.integer("threads", 1), 1, 1024);
   std::string field;
   if (const std::string why = s.relax.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (const std::string why = s.newton.invalid_reason(&field); !why.empty()) r.fail(field, why);
+  if (const std::string why = s.dynamic.invalid_reason(&field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"name", "tolerance_N", "max_iterations", "C", "regularization", "armijo",
-                    "max_backtracks", "threads"});
+                    "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
+                    "stretch_limit", "threads"});
 }
 
 void read_output(TableReader r, Scene* scene) {

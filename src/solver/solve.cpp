@@ -11,6 +11,7 @@ Summary solve(const Model& model, SolverState& state, const SolverSpec& spec,
   use_threads(spec.threads);
   if (spec.name == "relax") return relax(model, state, spec.relax, observer);
   if (spec.name == "newton") return newton(model, state, spec.newton, observer);
+  if (spec.name == "dynamic") return dynamic(model, state, spec.dynamic, observer);
   throw std::invalid_argument("unknown solver '" + spec.name + "'");
 }
 

@@ -20,6 +20,22 @@ double node_residual(const Model& model, const SolverState& state, int node,
       .norm();
 }
 
+namespace {
+
+StateResidual worst_of(const SolverState& state, const std::vector<double>& residual) {
+  StateResidual m;
+  for (std::size_t i = 0; i < residual.size(); ++i) {
+    const double v = residual[i];
+    const int k = static_cast<int>(i);
+    m.contact_nodes += state.contact[i].active() ? 1 : 0;
+    if (std::isnan(v)) return {v, k, m.contact_nodes};  // a broken node decides the run
+    if (v > m.max_residual_N || m.worst_node < 0) m.max_residual_N = v, m.worst_node = k;
+  }
+  return m;
+}
+
+}  // namespace
+
 StateResidual measure_state(const Model& model, const SolverState& state) {
   std::vector<double> residual(state.x.size());
 #pragma omp parallel for schedule(static) if (model.node_count() >= kMinParallelItems)
@@ -27,15 +43,17 @@ StateResidual measure_state(const Model& model, const SolverState& state) {
     const auto i = static_cast<std::size_t>(k);
     residual[i] = node_residual(model, state, k, state.x[i], state.contact[i]);
   }
-  StateResidual m;
-  for (int k = 0; k < model.node_count(); ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    const double v = residual[i];
-    m.contact_nodes += state.contact[i].active() ? 1 : 0;
-    if (std::isnan(v)) return {v, k, m.contact_nodes};  // a broken node decides the run
-    if (v > m.max_residual_N || m.worst_node < 0) m.max_residual_N = v, m.worst_node = k;
+  return worst_of(state, residual);
+}
+
+StateResidual measure_state(const Model& model, const SolverState& state,
+                            const std::vector<Eigen::Vector3d>& forces) {
+  std::vector<double> residual(state.x.size());
+  for (std::size_t i = 0; i < residual.size(); ++i) {
+    const NodeContact& contact = state.contact[i];
+    residual[i] = unbalanced_force(forces[i], model.locks[i], contact.active() ? &contact.normal : nullptr).norm();
   }
-  return m;
+  return worst_of(state, residual);
 }
 
 }  // namespace fabform

@@ -132,7 +132,7 @@ TEST(Cli, SolversListsEverySolver) {
   test::TempDir dir;
   const Outcome o = run_fabform(dir, "solvers");
   EXPECT_EQ(o.status, 0);
-  EXPECT_EQ(o.out, "relax\nnewton\n");
+  EXPECT_EQ(o.out, "relax\ndynamic\nnewton\n");
 }
 
 TEST(Cli, UnknownCommandIsAUsageError) {

@@ -48,6 +48,27 @@ TEST(LoadScene, ReadsValuesInSIAndResolvesPaths) {
   EXPECT_EQ(scene.initial.kind, InitialShape::Kind::flat);
 }
 
+// The dynamic solver's keys reach its options; tolerance and cap are every solver's.
+TEST(LoadScene, ReadsTheDynamicSolversKeys) {
+  std::string text = kMinimal;
+  text.replace(text.find("tolerance_N = 1e-3"), 18,
+               "name = \"dynamic\"\ntolerance_N = 2e-4\nmax_iterations = 77\n"
+               "areal_density_kg_m2 = 0.15\ndamping = 0.03\n"
+               "time_step_fraction = 0.5\nstretch_limit = 0.1");
+  test::TempDir dir;
+  const Scene scene = load_scene(dir.write("scene.toml", text));
+  const DynamicOptions& d = scene.solver.dynamic;
+  EXPECT_EQ(scene.solver.name, "dynamic");
+  EXPECT_EQ(scene.solver.tolerance_N(), 2e-4);
+  EXPECT_EQ(d.max_iterations, 77);
+  EXPECT_EQ(d.areal_density_kg_m2, 0.15);
+  ASSERT_TRUE(d.damping.has_value());
+  EXPECT_EQ(*d.damping, 0.03);
+  EXPECT_EQ(d.time_step_fraction, 0.5);
+  EXPECT_EQ(d.stretch_limit, 0.1);
+  EXPECT_FALSE(load_scene(dir.write("plain.toml", kMinimal)).solver.dynamic.damping.has_value());
+}
+
 TEST(LoadScene, ShippedScenesLoad) {
   for (const char* file : {"scenes/mold.toml", "scenes/torso.toml"}) {
     const Scene scene = load_scene(test::source_path(file));
@@ -121,7 +142,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadValue{"tolerance_N = 1e-3", "C = 1.0", "solver.C", 9},
                       BadValue{"tolerance_N = 1e-3", "name = \"simplex\"", "solver.name", 9},
                       BadValue{"tolerance_N = 1e-3", "max_iterations = -5", "solver.max_iterations", 9},
-                      BadValue{"tolerance_N = 1e-3", "threads = 0", "solver.threads", 9}),
+                      BadValue{"tolerance_N = 1e-3", "threads = 0", "solver.threads", 9},
+                      BadValue{"tolerance_N = 1e-3", "damping = 1.0", "solver.damping", 9},
+                      BadValue{"tolerance_N = 1e-3", "areal_density_kg_m2 = 0", "solver.areal_density_kg_m2", 9},
+                      BadValue{"tolerance_N = 1e-3", "time_step_fraction = 2", "solver.time_step_fraction", 9},
+                      BadValue{"tolerance_N = 1e-3", "stretch_limit = -0.1", "solver.stretch_limit", 9}),
     [](const auto& case_info) {
       std::string name = std::string(case_info.param.key) + "_" + std::to_string(case_info.index);
       for (char& c : name)

@@ -8,13 +8,16 @@
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/solver/relax.hpp"
 #include "support/clamped_fabric.hpp"
-#include "support/shapes.hpp"
+#include "support/fabric_over_sphere.hpp"
 
 namespace fabform {
 namespace {
 
 using test::clamped_fabric;
+using test::expect_same_rest;
+using test::fabric_over_sphere;
 using test::lift_interior;
+using test::max_distance;
 
 SolverState run_newton(const Model& model, double tolerance_N, Summary* summary) {
   SolverState state = SolverState::at_start(model);
@@ -33,12 +36,6 @@ SolverState run_relax(const Model& model, double tolerance_N) {
   return state;
 }
 
-double max_distance(const std::vector<Eigen::Vector3d>& a, const std::vector<Eigen::Vector3d>& b) {
-  double worst = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, (a[k] - b[k]).norm());
-  return worst;
-}
-
 // Converges to e, meets it when the residual is recomputed from positions alone, and ends
 // outside every body (1e-9 m is rounding).
 void expect_converged_outside(const Model& model, const SolverState& state, const Summary& s) {
@@ -48,30 +45,6 @@ void expect_converged_outside(const Model& model, const SolverState& state, cons
   const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-8);
   EXPECT_LE(check.max_residual_N, s.tolerance_N);
   EXPECT_LE(check.max_penetration_m, 1e-9);
-}
-
-// A sphere of 3 cm radius whose 320 segments make facets of 0.6 mm meeting at ridges 1.1° apart,
-// poles sideways so the fabric meets regular facets. On a faceted body the rest is not unique:
-// a node pressed onto a ridge balances on either facet next to it, a fraction of a facet from
-// the ridge, and the two solvers may pick different sides (measured: 5e-5 m apart with 160
-// segments, 1e-5 m with 640; the energies agree to 1e-12). So their answers are compared
-// within a twentieth of a facet, and their energies tightly.
-constexpr double kSphereRadius = 0.03;
-constexpr int kSphereSegments = 320;
-constexpr double kFacet = 2.0 * 3.14159265358979 * kSphereRadius / kSphereSegments;
-
-Model fabric_over_sphere(double lift) {
-  Model model = clamped_fabric(20, 0.1);
-  lift_interior(model, lift);
-  model.bodies.emplace_back("sphere", test::sideways_sphere({0.05, 0.05, -0.02}, kSphereRadius,
-                                                            kSphereSegments / 2, kSphereSegments));
-  return model;
-}
-
-void expect_same_rest(const Model& model, const SolverState& a, const SolverState& b) {
-  EXPECT_LE(max_distance(a.x, b.x), kFacet / 20.0);
-  const double energy = stretch_energy(model, a.x);
-  EXPECT_NEAR(stretch_energy(model, b.x), energy, 1e-9 * energy);
 }
 
 TEST(NewtonOptions, RejectsBadValues) {

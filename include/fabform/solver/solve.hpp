@@ -4,6 +4,7 @@
 #include <string>
 
 #include "fabform/model/model.hpp"
+#include "fabform/solver/dynamic.hpp"
 #include "fabform/solver/newton.hpp"
 #include "fabform/solver/relax.hpp"
 #include "fabform/solver/solver_state.hpp"
@@ -15,10 +16,15 @@ struct SolverSpec {
   std::string name = "relax";  // one of solver_names()
   RelaxOptions relax;          // used when name is "relax"
   NewtonOptions newton;        // used when name is "newton"
+  DynamicOptions dynamic;      // used when name is "dynamic"
   int threads = 1;
 
   /// e of the solver the spec names.
-  double tolerance_N() const { return name == "newton" ? newton.tolerance_N : relax.tolerance_N; }
+  double tolerance_N() const {
+    if (name == "newton") return newton.tolerance_N;
+    if (name == "dynamic") return dynamic.tolerance_N;
+    return relax.tolerance_N;
+  }
 };
 
 /// Runs the named solver from `state`. Throws std::invalid_argument for an unknown name or

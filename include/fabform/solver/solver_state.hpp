@@ -36,4 +36,8 @@ struct StateResidual {
 /// ‖V‖∞ with contact as the state records it (not found by geometry: see measure_equilibrium).
 StateResidual measure_state(const Model& model, const SolverState& state);
 
+/// The same from each node's resultant R, already computed at the state's positions.
+StateResidual measure_state(const Model& model, const SolverState& state,
+                            const std::vector<Eigen::Vector3d>& forces);
+
 }  // namespace fabform
