@@ -8,6 +8,7 @@
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/solver/contact_move.hpp"
+#include "fabform/thread_count.hpp"
 
 namespace fabform {
 
@@ -39,8 +40,16 @@ class Relaxation {
         step_attempts_(static_cast<int>(
             std::ceil(std::log(1.0 / options.min_step_fraction) / std::log(options.C)))) {}
 
+  // Checkerboard order: a node's springs reach only nodes of the other colour, so the nodes of
+  // one colour relax independently of each other, in parallel, with the same result for any
+  // thread count.
   void sweep() {
-    for (int k = 0; k < model_.node_count(); ++k) relax_node(k);
+    const FabricGrid& grid = model_.grid;
+    for (int colour = 0; colour < 2; ++colour) {
+#pragma omp parallel for schedule(dynamic, 256) if (grid.node_count() >= kMinParallelItems)
+      for (int k = 0; k < grid.node_count(); ++k)
+        if ((grid.i_of(k) + grid.j_of(k)) % 2 == colour) relax_node(k);
+    }
   }
 
  private:

@@ -1,7 +1,8 @@
 #pragma once
 // Seed 003's node-wise relaxation (García, Gómez, Ruiz, Boulanger 2006, §3.2–3.3), faithful:
-// each node in turn moves along its resultant R by ξ = Σ|d_k| / C (Eq. 4–5); while the move
-// does not reduce the node's residual, ξ is divided by C. A node pressed against a body slides
+// each node in turn (in checkerboard order, which the seed leaves open) moves along its
+// resultant R by ξ = Σ|d_k| / C (Eq. 4–5); while the move does not reduce the node's residual,
+// ξ is divided by C. A node pressed against a body slides
 // along its tangent plane and is projected back onto the surface; it leaves when R points out
 // of the body. Locked axes do not move. Stops when ‖V‖∞ ≤ e (Eq. 6) or at the iteration cap.
 #include <string>
