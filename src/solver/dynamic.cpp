@@ -7,7 +7,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fabform/model/equilibrium.hpp"
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/thread_count.hpp"
@@ -86,6 +85,16 @@ TimeStep stable_time_step(const Model& model, const std::vector<double>& masses,
 
 namespace {
 
+// A velocity along the node's free axes, and for a node on a body within its tangent plane,
+// whichever way the normal part pointed (move_node expects a tangent step on a body).
+Eigen::Vector3d sliding(const Eigen::Vector3d& v, AxisMask lock, const NodeContact& contact) {
+  const Eigen::Vector3d free = remove_locked(v, lock);
+  if (!contact.active()) return free;
+  const Eigen::Vector3d normal = remove_locked(contact.normal, lock);
+  const double length2 = normal.squaredNorm();
+  return length2 == 0.0 ? free : free - (free.dot(normal) / length2) * normal;
+}
+
 class Dynamics {
  public:
   Dynamics(const Model& model, SolverState& state, const DynamicOptions& options)
@@ -130,10 +139,8 @@ class Dynamics {
     NodeContact& contact = state_.contact[i];
     if (contact.active() && remove_locked(r, lock).dot(contact.normal) > 0.0)
       contact = NodeContact{};  // R points out of the body: the node leaves it (§3.2.2)
-    const Eigen::Vector3d* normal = contact.active() ? &contact.normal : nullptr;
     Eigen::Vector3d& v = velocity_[i];
-    v = (1.0 - damping_) * v + step_.seconds / mass_[i] * unbalanced_force(r, lock, nullptr);
-    v = unbalanced_force(v, lock, normal);  // a node on a body keeps only its sliding velocity
+    v = sliding((1.0 - damping_) * v + step_.seconds / mass_[i] * r, lock, contact);
     const NodeMove moved = move_node(model_, k, state_.x[i], step_.seconds * v, contact);
     if (moved.contact.active()) v -= std::min(v.dot(moved.contact.normal), 0.0) * moved.contact.normal;
     state_.x[i] = moved.x;
