@@ -156,7 +156,14 @@ void read_solver(TableReader r, Scene* scene) {
 void read_output(TableReader r, Scene* scene) {
   const std::string dir = r.text("dir", "");
   scene->output_dir = resolve(scene->path, dir);
-  r.reject_unknown({"dir"});
+  CheckpointSpec& c = scene->checkpoint;
+  c.every_iterations = checked_int(
+      r, "checkpoint_every_iterations",
+      r.integer("checkpoint_every_iterations", c.every_iterations), 0, 1'000'000'000);
+  c.every_minutes = r.number("checkpoint_every_minutes", c.every_minutes);
+  if (!(c.every_minutes >= 0.0 && c.every_minutes <= 1e6))
+    r.fail("checkpoint_every_minutes", "must be between 0 (off) and 1e6");
+  r.reject_unknown({"dir", "checkpoint_every_iterations", "checkpoint_every_minutes"});
 }
 
 Scene read_scene(const toml::table& root, const std::string& path,

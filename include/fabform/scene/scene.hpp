@@ -31,6 +31,13 @@ struct ConstraintSpec {
   SourceLocation where;
 };
 
+// When a run writes its state so that `fabform run --resume` can go on from there: every K
+// iterations and every M minutes, whichever comes first (0 turns either off).
+struct CheckpointSpec {
+  int every_iterations = 0;
+  double every_minutes = 10.0;
+};
+
 struct Scene {
   std::string path;
   std::string name;
@@ -48,6 +55,7 @@ struct Scene {
   SourceLocation initial_where;
   SolverSpec solver;
   std::string output_dir;  // "" when the scene names none
+  CheckpointSpec checkpoint;
 };
 
 /// The solver names fabform knows, in the order `fabform solvers` lists them.
