@@ -1,6 +1,7 @@
 #pragma once
 // The fabform command line: one function per command, each returning the exit status
-// (0 done, 2 bad input or usage, 3 did not converge, 4 numerical failure).
+// (0 done, 2 bad input or usage, 3 did not converge, 4 numerical failure, 128 + the signal's
+// number when SIGINT or SIGTERM interrupted a run, as shells report a signal).
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@ constexpr int kExitDone = 0;
 constexpr int kExitBadInput = 2;
 constexpr int kExitNotConverged = 3;
 constexpr int kExitNumericalFailure = 4;
+constexpr int kExitInterruptedBase = 128;
 
 int run_command(const std::vector<std::string>& args);
 int check_command(const std::vector<std::string>& args);

@@ -4,14 +4,20 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt_handlers.hpp"
+#include "cli/run_monitor.hpp"
 #include "fabform/error.hpp"
 #include "fabform/geometry/mesh_report.hpp"
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/table_range.hpp"
+#include "fabform/output/checkpoint.hpp"
 #include "fabform/output/progress.hpp"
 #include "fabform/output/result_writer.hpp"
+#include "fabform/output/results_folder.hpp"
+#include "fabform/output/run_inputs.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
+#include "fabform/solver/interrupt.hpp"
 
 namespace fabform::cli {
 namespace {
@@ -25,6 +31,7 @@ constexpr double kContactTolerance_m = 1e-8;
 struct RunArguments {
   std::string scene;
   std::optional<std::string> out;
+  std::optional<std::string> resume;  // a results folder to go on from
   std::vector<SceneOverride> overrides;
   bool quiet = false;
 };
@@ -35,11 +42,12 @@ const std::pair<const char*, const char*> kShorthands[] = {{"--solver", "solver.
                                                            {"--max-iter", "solver.max_iterations"},
                                                            {"--threads", "solver.threads"}};
 
+InputError usage_error(const std::string& flag, const std::string& why) {
+  return InputError({"command line", 0, flag}, why);
+}
+
 RunArguments parse_arguments(const std::vector<std::string>& args) {
   RunArguments parsed;
-  const auto usage_error = [](const std::string& flag, const std::string& why) {
-    return InputError({"command line", 0, flag}, why);
-  };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     const auto value = [&]() -> std::string {
@@ -51,37 +59,33 @@ RunArguments parse_arguments(const std::vector<std::string>& args) {
       if (a == flag) parsed.overrides.push_back({key, value()}), shorthand = true;
     if (shorthand) continue;
     if (a == "--out") parsed.out = value();
+    else if (a == "--resume") parsed.resume = value();
     else if (a == "--set") parsed.overrides.push_back(parse_override(value()));
     else if (a == "--quiet") parsed.quiet = true;
     else if (!a.empty() && a[0] == '-') throw usage_error(a, "unknown option");
     else if (parsed.scene.empty()) parsed.scene = a;
     else throw usage_error(a, "only one scene can be run at a time");
   }
-  if (parsed.scene.empty()) throw usage_error("SCENE", "missing: fabform run SCENE [--out DIR]");
+  if (parsed.resume && (!parsed.scene.empty() || parsed.out || !parsed.overrides.empty()))
+    throw usage_error("--resume", "takes the scene, overrides and folder of the run it resumes; "
+                                  "only --quiet may be added");
+  if (parsed.scene.empty() && !parsed.resume)
+    throw usage_error("SCENE", "missing: fabform run SCENE [--out DIR] | fabform run --resume DIR");
   return parsed;
 }
 
 std::string output_dir(const RunArguments& args, const Scene& scene) {
+  if (args.resume) return *args.resume;
   if (args.out) return *args.out;
   if (!scene.output_dir.empty()) return scene.output_dir;
   return (fs::path("results") / scene.name).string();
-}
-
-// Fails before a long solve, not after it, when the results could not be written.
-void check_writable(const std::string& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  const std::string probe = (fs::path(dir) / ".fabform-write-probe").string();
-  std::FILE* f = ec ? nullptr : std::fopen(probe.c_str(), "w");
-  if (!f) throw InputError({dir, 0, ""}, "the output folder cannot be written");
-  std::fclose(f);
-  std::remove(probe.c_str());
 }
 
 int exit_status(Termination termination) {
   switch (termination) {
     case Termination::converged: return kExitDone;
     case Termination::numerical_failure: return kExitNumericalFailure;
+    case Termination::interrupted: return kExitInterruptedBase + interrupt_signal();
     default: return kExitNotConverged;
   }
 }
@@ -99,27 +103,72 @@ std::vector<std::string> collect_warnings(const Model& model, const SolverState&
   return warnings;
 }
 
+// What a run starts from: the scene and overrides given, or those a resumed run recorded.
+struct RunStart {
+  Scene scene;
+  std::vector<SceneOverride> overrides;
+  std::optional<RunInputs> recorded;  // the resumed run's
+};
+
+RunStart start_of(const RunArguments& args) {
+  if (!args.resume) return {load_scene(args.scene, args.overrides), args.overrides, std::nullopt};
+  RunInputs recorded = read_run_inputs((fs::path(*args.resume) / "result.json").string());
+  Scene scene = load_scene(recorded.scene_file, recorded.overrides);
+  return {std::move(scene), recorded.overrides, std::move(recorded)};
+}
+
+// A resumed run goes on from the checkpoint's state and summary, if its inputs are unchanged.
+void take_up_checkpoint(const std::string& dir, const Model& model, const RunInputs& recorded,
+                        const RunInputs& now, SolverState* state, Summary* so_far) {
+  const std::string result_json = (fs::path(dir) / "result.json").string();
+  if (const std::string change = input_change(recorded, now); !change.empty())
+    throw InputError({result_json, 0, ""}, "cannot resume: " + change);
+  Checkpoint c = read_checkpoint((fs::path(dir) / "checkpoint.bin").string(), model.node_count(),
+                                 static_cast<int>(model.bodies.size()));
+  *state = std::move(c.state);
+  *so_far = std::move(c.summary);
+}
+
+// Says what the run's last state is when it is not simply where the solver stopped.
+void explain_ending(Summary* summary, const RunMonitor& monitor, const std::string& dir) {
+  if (summary->termination == Termination::numerical_failure)
+    summary->message += "; the state written is iteration " +
+                        std::to_string(monitor.last_good_iteration()) + "'s, the last good one kept";
+  if (summary->termination == Termination::interrupted)
+    summary->message += "; go on with: fabform run --resume " + dir;
+}
+
 int run(const RunArguments& args) {
   const auto started = std::chrono::steady_clock::now();
-  const Scene scene = load_scene(args.scene, args.overrides);
+  const RunStart start = start_of(args);
+  const Scene& scene = start.scene;
   const Model model = build_model(scene);
   const std::string dir = output_dir(args, scene);
-  check_writable(dir);
-  std::fprintf(stderr, "fabform: scene %s, %d nodes, %zu bodies, solver %s, e = %g N\n",
-               scene.name.c_str(), model.node_count(), model.bodies.size(),
-               scene.solver.name.c_str(), scene.solver.tolerance_N());
-  Progress progress(stderr);
+  check_results_folder(dir);
+  const RunInputs inputs = describe_inputs(scene, start.overrides);
   SolverState state = SolverState::at_start(model);
-  const Summary summary = solve(model, state, scene.solver, [&](const IterationRecord& r) {
-    if (!args.quiet) progress.update(r);
-  });
+  Summary so_far;
+  if (start.recorded) take_up_checkpoint(dir, model, *start.recorded, inputs, &state, &so_far);
+  so_far = begin_summary(scene.solver.name, scene.solver.tolerance_N(), std::move(so_far));
+  std::fprintf(stderr, "fabform: scene %s, %d nodes, %zu bodies, solver %s, e = %g N%s\n",
+               scene.name.c_str(), model.node_count(), model.bodies.size(),
+               scene.solver.name.c_str(), scene.solver.tolerance_N(),
+               start.recorded ? (", resumed after iteration " + std::to_string(so_far.iterations)).c_str() : "");
+  const auto publish = [&](const SolverState& s, const Summary& summary) {
+    const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    write_results(dir, RunRecord{scene, model, s, summary, check, inputs,
+                                 collect_warnings(model, s, check, 1e-6), wall, scene.solver.threads});
+  };
+  Progress progress(stderr);
+  RunMonitor monitor(state, so_far, scene.checkpoint, publish, args.quiet ? nullptr : &progress);
+  const InterruptHandlers handlers;
+  Summary summary = solve(model, state, scene.solver,
+                          [&](const IterationRecord& r) { monitor.observe(r); }, std::move(so_far));
   if (!args.quiet) progress.finish();
-  const EquilibriumReport check = measure_equilibrium(model, state.x, kContactTolerance_m);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  RunRecord record{scene, model, state, summary, check,
-                   collect_warnings(model, state, check, 1e-6), wall, scene.solver.threads};
-  write_results(dir, record);
-  for (const auto& w : record.warnings) std::fprintf(stderr, "fabform: warning: %s\n", w.c_str());
+  explain_ending(&summary, monitor, dir);
+  const bool broke = summary.termination == Termination::numerical_failure;
+  publish(broke ? monitor.last_good_state() : state, summary);
   std::fprintf(stderr, "fabform: %s: %s\nfabform: results in %s\n", to_string(summary.termination).c_str(),
                summary.message.c_str(), dir.c_str());
   return exit_status(summary.termination);

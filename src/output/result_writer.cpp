@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "fabform/model/stretch_forces.hpp"
+#include "fabform/output/checkpoint.hpp"
+#include "fabform/output/results_folder.hpp"
 
 namespace fabform {
 namespace {
@@ -24,7 +26,15 @@ std::string result_json(const RunRecord& run) {
   nlohmann::json j;
   j["fabform_version"] = FABFORM_VERSION;
   j["scene"] = run.scene.name;
-  j["scene_file"] = run.scene.path;
+  j["scene_file"] = run.inputs.scene_file;
+  j["scene_sha256"] = run.inputs.files.front().sha256;
+  nlohmann::json overrides = nlohmann::json::array();
+  for (const SceneOverride& o : run.inputs.overrides) overrides.push_back({{"key", o.key}, {"value", o.value}});
+  j["overrides"] = overrides;
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const InputFile& f : run.inputs.files)
+    inputs.push_back({{"role", f.role}, {"path", f.path}, {"sha256", f.sha256}});
+  j["inputs"] = inputs;
   j["solver"] = s.solver;
   j["threads"] = run.threads;
   j["converged"] = s.converged();
@@ -130,16 +140,14 @@ void write_file_atomically(const std::string& path, const std::string& content) 
 }
 
 void write_results(const std::string& dir, const RunRecord& run) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) throw std::runtime_error(dir + ": cannot create the output folder");
-  // Everything is rendered before anything is written, so a failure leaves the folder as it was.
-  const std::pair<const char*, std::string> files[] = {
-      {"convergence.csv", convergence_csv(run.summary)},
-      {"fabric.obj", fabric_obj(run)},
-      {"fabric.vtk", fabric_vtk(run)},
-      {"result.json", result_json(run)}};
-  for (const auto& [name, content] : files) write_file_atomically((fs::path(dir) / name).string(), content);
+  std::vector<ResultFile> files = {{"convergence.csv", convergence_csv(run.summary)},
+                                   {"fabric.obj", fabric_obj(run)},
+                                   {"fabric.vtk", fabric_vtk(run)},
+                                   {"result.json", result_json(run)}};
+  const Termination t = run.summary.termination;
+  if (t != Termination::converged && t != Termination::numerical_failure)
+    files.emplace_back("checkpoint.bin", checkpoint_bytes(run.state, run.summary));
+  publish_results(dir, files);
 }
 
 }  // namespace fabform

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/solver/contact_move.hpp"
@@ -102,9 +103,11 @@ class Dynamics {
         state_(state),
         options_(options),
         mass_(node_masses(model, options.areal_density_kg_m2)),
-        velocity_(state.x.size(), Eigen::Vector3d::Zero()),
+
         step_(stable_time_step(model, mass_, options.time_step_fraction)),
         damping_(options.damping ? *options.damping : default_damping(model)) {
+    if (state.velocity.size() != state.x.size())
+      state.velocity.assign(state.x.size(), Eigen::Vector3d::Zero());
     if (options.stretch_limit > 0.0) order_springs();
   }
 
@@ -139,7 +142,7 @@ class Dynamics {
     NodeContact& contact = state_.contact[i];
     if (contact.active() && remove_locked(r, lock).dot(contact.normal) > 0.0)
       contact = NodeContact{};  // R points out of the body: the node leaves it (§3.2.2)
-    Eigen::Vector3d& v = velocity_[i];
+    Eigen::Vector3d& v = state_.velocity[i];
     v = sliding((1.0 - damping_) * v + step_.seconds / mass_[i] * r, lock, contact);
     const NodeMove moved = move_node(model_, k, state_.x[i], step_.seconds * v, contact);
     if (moved.contact.active()) v -= std::min(v.dot(moved.contact.normal), 0.0) * moved.contact.normal;
@@ -207,7 +210,6 @@ class Dynamics {
   SolverState& state_;
   const DynamicOptions& options_;
   std::vector<double> mass_;
-  std::vector<Eigen::Vector3d> velocity_;
   TimeStep step_;
   double damping_;
   std::vector<int> hops_;           // springs from each node to the nearest held node
@@ -226,20 +228,20 @@ std::string step_note(const Dynamics& dynamics) {
 }  // namespace
 
 Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& options,
-                const IterationObserver& observer) {
+                const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("dynamic: " + why);
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Dynamics dynamics(model, state, options);
-  Summary summary;
-  summary.solver = "dynamic";
-  summary.tolerance_N = options.tolerance_N;
-  for (int iteration = 0;; ++iteration) {
+  Summary summary = begin_summary("dynamic", options.tolerance_N, std::move(resumed));
+  const double earlier_seconds = summary.seconds;
+  for (int iteration = summary.iterations;; ++iteration) {
     // The forces at the state the last step reached give its residual and drive the next step.
     const std::vector<Eigen::Vector3d> forces = dynamics.forces();
     const StateResidual m = measure_state(model, state, forces);
-    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    const double seconds =
+        earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
     const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
     if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
     dynamics.advance(forces);

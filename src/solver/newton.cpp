@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/solver/contact_move.hpp"
@@ -67,7 +68,10 @@ double first_order_change(const std::vector<Eigen::Vector3d>& forces,
 class NewtonStep {
  public:
   NewtonStep(const Model& model, SolverState& state, const NewtonOptions& options)
-      : model_(model), state_(state), options_(options), mu_(options.regularization) {}
+      : model_(model),
+        state_(state),
+        options_(options),
+        mu_(state.regularization > 0.0 ? state.regularization : options.regularization) {}
 
   /// One Newton step from the current state, whose ‖V‖∞ is `residual`; false when no step along
   /// the Newton direction is acceptable (the state is then unchanged).
@@ -84,6 +88,7 @@ class NewtonStep {
     // Levenberg–Marquardt-like: a full step earns less regularisation, a short one more.
     if (*alpha == 1.0) mu_ = std::max(mu_ / 10.0, options_.regularization);
     else if (*alpha < 0.1) mu_ = std::min(mu_ * 10.0, kMaxRegularization);
+    state_.regularization = mu_;
     return true;
   }
 
@@ -158,24 +163,27 @@ std::string stall_message(const Summary& s) {
 }  // namespace
 
 Summary newton(const Model& model, SolverState& state, const NewtonOptions& options,
-               const IterationObserver& observer) {
+               const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("newton: " + why);
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   NewtonStep step(model, state, options);
-  Summary summary;
-  summary.solver = "newton";
-  summary.tolerance_N = options.tolerance_N;
-  for (int iteration = 0;; ++iteration) {
-    if (iteration > 0 && !step.take(summary.residual_N)) {
+  Summary summary = begin_summary("newton", options.tolerance_N, std::move(resumed));
+  const int first = summary.iterations;
+  const double earlier_seconds = summary.seconds;
+  const auto elapsed = [&] {
+    return earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
+  };
+  for (int iteration = first;; ++iteration) {
+    if (iteration > first && !step.take(summary.residual_N)) {
       summary.termination = Termination::not_converged;
-      summary.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+      summary.seconds = elapsed();
       summary.message = stall_message(summary);
       return summary;
     }
     const StateResidual m = measure_state(model, state);
-    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    const double seconds = elapsed();
     const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
     if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
   }

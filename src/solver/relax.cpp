@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/stretch_forces.hpp"
@@ -99,19 +100,20 @@ class Relaxation {
 }  // namespace
 
 Summary relax(const Model& model, SolverState& state, const RelaxOptions& options,
-              const IterationObserver& observer) {
+              const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("relax: " + why);
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Relaxation relaxation(model, state, options);
-  Summary summary;
-  summary.solver = "relax";
-  summary.tolerance_N = options.tolerance_N;
-  for (int iteration = 0;; ++iteration) {
-    if (iteration > 0) relaxation.sweep();
+  Summary summary = begin_summary("relax", options.tolerance_N, std::move(resumed));
+  const int first = summary.iterations;
+  const double earlier_seconds = summary.seconds;
+  for (int iteration = first;; ++iteration) {
+    if (iteration > first) relaxation.sweep();
     const StateResidual m = measure_state(model, state);
-    const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    const double seconds =
+        earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
     const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
     if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
   }

@@ -1,17 +1,18 @@
 #include "fabform/solver/solve.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
 
 Summary solve(const Model& model, SolverState& state, const SolverSpec& spec,
-              const IterationObserver& observer) {
+              const IterationObserver& observer, Summary resumed) {
   use_threads(spec.threads);
-  if (spec.name == "relax") return relax(model, state, spec.relax, observer);
-  if (spec.name == "newton") return newton(model, state, spec.newton, observer);
-  if (spec.name == "dynamic") return dynamic(model, state, spec.dynamic, observer);
+  if (spec.name == "relax") return relax(model, state, spec.relax, observer, std::move(resumed));
+  if (spec.name == "newton") return newton(model, state, spec.newton, observer, std::move(resumed));
+  if (spec.name == "dynamic") return dynamic(model, state, spec.dynamic, observer, std::move(resumed));
   throw std::invalid_argument("unknown solver '" + spec.name + "'");
 }
 

@@ -9,7 +9,10 @@
 namespace fabform {
 
 SolverState SolverState::at_start(const Model& model) {
-  return {model.start, std::vector<NodeContact>(model.start.size())};
+  SolverState state;
+  state.x = model.start;
+  state.contact.resize(model.start.size());
+  return state;
 }
 
 double node_residual(const Model& model, const SolverState& state, int node,
@@ -22,15 +25,20 @@ double node_residual(const Model& model, const SolverState& state, int node,
 
 namespace {
 
+// A broken node decides the run: first one whose position is not finite (its neighbours'
+// residuals follow from it), else the first whose residual is NaN.
 StateResidual worst_of(const SolverState& state, const std::vector<double>& residual) {
   StateResidual m;
+  int broken = -1;
   for (std::size_t i = 0; i < residual.size(); ++i) {
     const double v = residual[i];
     const int k = static_cast<int>(i);
     m.contact_nodes += state.contact[i].active() ? 1 : 0;
-    if (std::isnan(v)) return {v, k, m.contact_nodes};  // a broken node decides the run
+    if (!state.x[i].allFinite()) return {std::nan(""), k, m.contact_nodes};
+    if (std::isnan(v) && broken < 0) broken = k;
     if (v > m.max_residual_N || m.worst_node < 0) m.max_residual_N = v, m.worst_node = k;
   }
+  if (broken >= 0) m.max_residual_N = std::nan(""), m.worst_node = broken;
   return m;
 }
 

@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+
+#include "fabform/solver/interrupt.hpp"
 
 namespace fabform {
 
@@ -10,13 +13,28 @@ std::string to_string(Termination termination) {
     case Termination::converged: return "converged";
     case Termination::not_converged: return "not converged";
     case Termination::numerical_failure: return "numerical failure";
+    case Termination::interrupted: return "interrupted";
+    case Termination::running: return "running";
   }
   return "unknown";
 }
 
+Summary begin_summary(const std::string& solver, double tolerance_N, Summary resumed) {
+  if (!resumed.solver.empty() && resumed.solver != solver)
+    throw std::invalid_argument("a run of " + resumed.solver + " cannot be resumed by " + solver);
+  resumed.solver = solver;
+  resumed.tolerance_N = tolerance_N;
+  resumed.termination = Termination::not_converged;
+  resumed.message.clear();
+  return resumed;
+}
+
 bool record_iteration(Summary& summary, const IterationRecord& record, int worst_node,
                       int max_iterations, const IterationObserver& observer) {
-  summary.history.push_back(record);
+  if (!summary.history.empty() && summary.history.back().iteration == record.iteration)
+    summary.history.back() = record;
+  else
+    summary.history.push_back(record);
   if (observer) observer(record);
   summary.iterations = record.iteration;
   summary.residual_N = record.residual_N;
@@ -25,6 +43,7 @@ bool record_iteration(Summary& summary, const IterationRecord& record, int worst
   if (!std::isfinite(record.residual_N)) summary.termination = Termination::numerical_failure;
   else if (record.residual_N <= summary.tolerance_N) summary.termination = Termination::converged;
   else if (record.iteration >= max_iterations) summary.termination = Termination::not_converged;
+  else if (interrupt_signal() != 0) summary.termination = Termination::interrupted;
   else return false;
   return true;
 }
@@ -36,7 +55,13 @@ std::string stop_message(const Summary& s) {
     text << "||V||inf = " << s.residual_N << " N <= e = " << s.tolerance_N << " N after "
          << s.iterations << " iterations";
   else if (s.termination == Termination::numerical_failure)
-    text << "non-finite residual at node " << s.worst_node << " in iteration " << s.iterations;
+    text << "NaN or Inf at node " << s.worst_node << " in iteration " << s.iterations;
+  else if (s.termination == Termination::interrupted)
+    text << "interrupted by signal " << interrupt_signal() << " after iteration " << s.iterations
+         << " with ||V||inf = " << s.residual_N << " N";
+  else if (s.termination == Termination::running)
+    text << "checkpoint after iteration " << s.iterations << " with ||V||inf = " << s.residual_N
+         << " N; the run was still going";
   else
     text << "iteration cap " << s.iterations << " reached with ||V||inf = " << s.residual_N
          << " N > e = " << s.tolerance_N << " N (worst node " << s.worst_node << ")";

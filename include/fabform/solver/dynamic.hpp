@@ -47,8 +47,9 @@ struct TimeStep {
 /// table, which bounds its stiffness at every strain (along it, and across it, T/l ≤ T'/L).
 TimeStep stable_time_step(const Model& model, const std::vector<double>& masses, double fraction);
 
-/// Throws std::invalid_argument when options.invalid_reason() is not empty.
+/// Throws std::invalid_argument when options.invalid_reason() is not empty. `resumed` is the
+/// summary of the run `state` was checkpointed from (see begin_summary).
 Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& options,
-                const IterationObserver& observer = {});
+                const IterationObserver& observer = {}, Summary resumed = {});
 
 }  // namespace fabform

@@ -27,8 +27,9 @@ struct NewtonOptions {
   std::string invalid_reason(std::string* field = nullptr) const;
 };
 
-/// Throws std::invalid_argument when options.invalid_reason() is not empty.
+/// Throws std::invalid_argument when options.invalid_reason() is not empty. `resumed` is the
+/// summary of the run `state` was checkpointed from (see begin_summary).
 Summary newton(const Model& model, SolverState& state, const NewtonOptions& options,
-               const IterationObserver& observer = {});
+               const IterationObserver& observer = {}, Summary resumed = {});
 
 }  // namespace fabform

@@ -24,8 +24,9 @@ struct RelaxOptions {
   std::string invalid_reason(std::string* field = nullptr) const;
 };
 
-/// Throws std::invalid_argument when options.invalid_reason() is not empty.
+/// Throws std::invalid_argument when options.invalid_reason() is not empty. `resumed` is the
+/// summary of the run `state` was checkpointed from (see begin_summary).
 Summary relax(const Model& model, SolverState& state, const RelaxOptions& options,
-              const IterationObserver& observer = {});
+              const IterationObserver& observer = {}, Summary resumed = {});
 
 }  // namespace fabform

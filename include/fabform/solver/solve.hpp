@@ -27,9 +27,9 @@ struct SolverSpec {
   }
 };
 
-/// Runs the named solver from `state`. Throws std::invalid_argument for an unknown name or
+/// Runs the named solver from `state`, going on from `resumed` when it is a checkpoint's. Throws std::invalid_argument for an unknown name or
 /// options the solver refuses.
 Summary solve(const Model& model, SolverState& state, const SolverSpec& spec,
-              const IterationObserver& observer = {});
+              const IterationObserver& observer = {}, Summary resumed = {});
 
 }  // namespace fabform

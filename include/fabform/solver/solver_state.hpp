@@ -19,6 +19,10 @@ struct NodeContact {
 struct SolverState {
   std::vector<Eigen::Vector3d> x;
   std::vector<NodeContact> contact;
+  // What a solver carries from one iteration to the next, kept here so that a checkpoint holds
+  // all a resumed run needs to go on exactly as the uninterrupted run would have.
+  std::vector<Eigen::Vector3d> velocity;  // dynamic's node velocities; empty: at rest
+  double regularization = 0.0;            // newton's current μ; 0: its options' initial value
 
   static SolverState at_start(const Model& model);
 };
@@ -33,7 +37,8 @@ struct StateResidual {
   int contact_nodes = 0;        // nodes the state holds on a body
 };
 
-/// ‖V‖∞ with contact as the state records it (not found by geometry: see measure_equilibrium).
+/// ‖V‖∞ with contact as the state records it. A node whose position is NaN or Inf is reported
+/// first (NaN residual, that node), as the place where the state broke (not found by geometry: see measure_equilibrium).
 StateResidual measure_state(const Model& model, const SolverState& state);
 
 /// The same from each node's resultant R, already computed at the state's positions.

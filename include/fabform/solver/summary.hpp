@@ -7,9 +7,11 @@
 
 namespace fabform {
 
-enum class Termination { converged, not_converged, numerical_failure };
+// `interrupted`: SIGINT or SIGTERM asked the run to stop (see interrupt.hpp). `running` is never
+// a solver's: it marks the summary of a checkpoint written while the run went on.
+enum class Termination { converged, not_converged, numerical_failure, interrupted, running };
 
-/// "converged", "not converged", "numerical failure".
+/// "converged", "not converged", "numerical failure", "interrupted", "running".
 std::string to_string(Termination termination);
 
 struct IterationRecord {
@@ -36,9 +38,16 @@ struct Summary {
 /// Called after each iteration (and once for the start, iteration 0).
 using IterationObserver = std::function<void(const IterationRecord&)>;
 
-/// Appends an iteration to the summary's history and totals, tells the observer, and sets the
-/// termination when the run stops here: a non-finite residual, ‖V‖∞ ≤ e, or `max_iterations`
-/// reached. Returns whether it stops. `worst_node` is where ‖V‖∞ is attained.
+/// The summary a solver starts from: empty for a fresh run, or the one of the run it resumes
+/// (its iterations and history go on). Throws std::invalid_argument when `resumed` belongs to
+/// another solver.
+Summary begin_summary(const std::string& solver, double tolerance_N, Summary resumed = {});
+
+/// Appends an iteration to the summary's history and totals (replacing the last record when it
+/// has the same iteration: a resumed run re-measures the state it resumes from), tells the
+/// observer, and sets the termination when the run stops here: a non-finite residual,
+/// ‖V‖∞ ≤ e, `max_iterations` reached, or an interrupt requested. Returns whether it stops.
+/// `worst_node` is where ‖V‖∞ is attained.
 bool record_iteration(Summary& summary, const IterationRecord& record, int worst_node,
                       int max_iterations, const IterationObserver& observer);
 

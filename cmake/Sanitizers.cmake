@@ -1,0 +1,27 @@
+# FABFORM_SANITIZE: build everything defined after this file is included (the library, the CLI,
+# the tests, the benchmark) under the named sanitizers, e.g.
+#   cmake -S . -B build-asan -DFABFORM_SANITIZE=address,undefined
+# Empty (the default) builds without. tools/sanitize.sh is the configuration CI runs.
+# Included from the top-level CMakeLists.txt before any target is defined: directory-wide
+# options reach only the targets created after them.
+set(FABFORM_SANITIZE "" CACHE STRING
+    "Comma-separated -fsanitize= list for every target (e.g. address,undefined); empty: none")
+
+if(FABFORM_SANITIZE)
+  if(FABFORM_FUZZ)
+    message(FATAL_ERROR "FABFORM_SANITIZE and FABFORM_FUZZ: the fuzz build sets its own sanitizers; "
+                        "use one build directory for each")
+  endif()
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+    message(FATAL_ERROR "FABFORM_SANITIZE needs GCC or Clang, not ${CMAKE_CXX_COMPILER_ID}")
+  endif()
+  set(_fabform_sanitize_flags -fsanitize=${FABFORM_SANITIZE} -fno-omit-frame-pointer)
+  # Undefined behaviour ends the process (and fails the test) instead of printing and going on.
+  if(FABFORM_SANITIZE MATCHES "undefined")
+    list(APPEND _fabform_sanitize_flags -fno-sanitize-recover=undefined)
+  endif()
+  add_compile_options(${_fabform_sanitize_flags})
+  add_link_options(-fsanitize=${FABFORM_SANITIZE})
+  message(STATUS "fabform: sanitizers ${FABFORM_SANITIZE}")
+  unset(_fabform_sanitize_flags)
+endif()

@@ -1,0 +1,63 @@
+#include "cli/run_monitor.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace fabform::cli {
+namespace {
+
+// Copying the state after every iteration would cost a fast solver (dynamic steps, small
+// grids) a good share of its time; a copy is taken once the time since the last is this many
+// times what the last copy took, bounding the cost near 5 %.
+constexpr double kCopyIntervalFactor = 20.0;
+
+}  // namespace
+
+RunMonitor::RunMonitor(const SolverState& state, Summary so_far, const CheckpointSpec& checkpoints,
+                       Publisher publish, Progress* progress)
+    : state_(state),
+      so_far_(std::move(so_far)),
+      checkpoints_(checkpoints),
+      publish_(std::move(publish)),
+      progress_(progress),
+      last_checkpoint_iteration_(so_far_.iterations) {}
+
+void RunMonitor::observe(const IterationRecord& record) {
+  if (progress_) progress_->update(record);
+  if (!std::isfinite(record.residual_N)) return;
+  keep_good_state(record);
+  if (!so_far_.history.empty() && so_far_.history.back().iteration == record.iteration)
+    so_far_.history.back() = record;
+  else
+    so_far_.history.push_back(record);
+  if (!checkpoint_due(record)) return;
+  Summary snapshot = so_far_;
+  snapshot.termination = Termination::running;
+  snapshot.iterations = record.iteration;
+  snapshot.residual_N = record.residual_N;
+  snapshot.seconds = record.seconds;
+  snapshot.message = stop_message(snapshot);
+  publish_(state_, snapshot);
+  last_checkpoint_iteration_ = record.iteration;
+  last_checkpoint_time_ = Clock::now();
+}
+
+bool RunMonitor::checkpoint_due(const IterationRecord& record) const {
+  const int every = checkpoints_.every_iterations;
+  if (every > 0 && record.iteration - last_checkpoint_iteration_ >= every) return true;
+  const double minutes = std::chrono::duration<double>(Clock::now() - last_checkpoint_time_).count() / 60.0;
+  return checkpoints_.every_minutes > 0.0 && minutes >= checkpoints_.every_minutes;
+}
+
+void RunMonitor::keep_good_state(const IterationRecord& record) {
+  const auto now = Clock::now();
+  if (last_good_iteration_ >= 0 &&
+      std::chrono::duration<double>(now - last_copy_end_).count() < kCopyIntervalFactor * last_copy_seconds_)
+    return;
+  last_good_ = state_;
+  last_good_iteration_ = record.iteration;
+  last_copy_end_ = Clock::now();
+  last_copy_seconds_ = std::chrono::duration<double>(last_copy_end_ - now).count();
+}
+
+}  // namespace fabform::cli
