@@ -16,6 +16,10 @@ struct VisitContext {
   const std::function<double(int)>* visitor;
 };
 
+bool finite_as_float(const Eigen::Vector3d& v) {
+  return (v.array().abs() < static_cast<double>(std::numeric_limits<float>::max())).all();
+}
+
 bool visit_candidate(RTCPointQueryFunctionArguments* args) {
   auto* context = static_cast<VisitContext*>(args->userPtr);
   const double radius = (*context->visitor)(static_cast<int>(args->primID));
@@ -92,6 +96,7 @@ void EmbreeScene::check(const char* doing) const {
 
 void EmbreeScene::visit_near(const Eigen::Vector3d& p, double radius,
                              const std::function<double(int)>& visitor) const {
+  if (!finite_as_float(p)) return;  // a broken node is reported by the solver, not crashed on
   RTCPointQuery query;
   query.x = static_cast<float>(p.x());
   query.y = static_cast<float>(p.y());
@@ -109,6 +114,9 @@ void EmbreeScene::visit_near(const Eigen::Vector3d& p, double radius,
 std::optional<EmbreeScene::RayHit> EmbreeScene::first_hit(const Eigen::Vector3d& origin,
                                                           const Eigen::Vector3d& direction,
                                                           double t_near, double t_far) const {
+  // Embree asserts on rays that are not finite; a broken node's query sees nothing instead.
+  if (!finite_as_float(origin) || !finite_as_float(direction) || !(t_near >= 0.0 && t_near <= t_far))
+    return std::nullopt;
   RTCRayHit ray_hit{};
   ray_hit.ray.org_x = static_cast<float>(origin.x());
   ray_hit.ray.org_y = static_cast<float>(origin.y());

@@ -176,13 +176,14 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
     return earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
   };
   for (int iteration = first;; ++iteration) {
-    if (iteration > first && !step.take(summary.residual_N)) {
+    const bool stepped = iteration == first || step.take(summary.residual_N);
+    const StateResidual m = measure_state(model, state);
+    if (!stepped && std::isfinite(m.max_residual_N)) {  // a broken state is recorded below
       summary.termination = Termination::not_converged;
       summary.seconds = elapsed();
       summary.message = stall_message(summary);
       return summary;
     }
-    const StateResidual m = measure_state(model, state);
     const double seconds = elapsed();
     const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
     if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;

@@ -483,6 +483,22 @@ TEST_F(RigidBodyBox, RandomEntriesAreTheFirstCrossing) {
   EXPECT_GT(entries, 1000);
 }
 
+// A solver's node that broke (NaN, Inf, or beyond float range, where Embree's boxes live) must
+// get an answer, not an Embree assertion: no entry, no crossing, a non-finite or far distance.
+TEST_F(RigidBodyBox, BrokenQueryPointsGetAnswersNotCrashes) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const V inside(0.0, 0.1, 0.05);
+  for (const V& broken : {V(nan, 0.0, 0.0), V(0.0, inf, 0.0), V(0.0, 0.0, -1e39)}) {
+    EXPECT_FALSE(body_->first_entry(broken, inside).has_value()) << broken.transpose();
+    EXPECT_FALSE(body_->first_entry(V(-3.0, 0.1, 0.05), broken).has_value()) << broken.transpose();
+    EXPECT_FALSE(body_->segment_crosses(broken, inside)) << broken.transpose();
+    EXPECT_FALSE(body_->closest_within(broken, 1.0).has_value()) << broken.transpose();
+    const double d = body_->closest(broken).distance;
+    EXPECT_TRUE(std::isnan(d) || d > 1e30) << broken.transpose() << ": " << d;
+  }
+}
+
 TEST(RigidBody, FirstEntrySkipsExitFromAnotherBox) {
   // Two boxes in one mesh: starting inside the first, the move leaves it (a back-face
   // crossing, skipped) and then enters the second at x = 4.

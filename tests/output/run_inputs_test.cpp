@@ -1,0 +1,78 @@
+// What a run was made from, as result.json records it and a resume reads it back.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fabform/error.hpp"
+#include "fabform/io/sha256.hpp"
+#include "fabform/output/run_inputs.hpp"
+#include "fabform/scene/scene_toml.hpp"
+#include "support/temp_dir.hpp"
+
+namespace fabform {
+namespace {
+
+class RunInputsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir.write("warp.csv", "strain,tension_N_per_m\n0,0\n1,500\n");
+    dir.write("weft.csv", "strain,tension_N_per_m\n0,0\n1,300\n");
+    dir.write("block.obj", "v 0 0 -1\nv 1 0 -1\nv 0 1 -1\nf 1 2 3\n");
+    dir.write("scene.toml",
+              "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [2, 2]\nwarp = \"warp.csv\"\nweft = \"weft.csv\"\n"
+              "[[body]]\nname = \"block\"\nmesh = \"block.obj\"\nunits = \"m\"\n");
+  }
+  RunInputs describe() const {
+    const std::vector<SceneOverride> overrides = {{"solver.name", "newton"}};
+    return describe_inputs(load_scene(dir.path("scene.toml"), overrides), overrides);
+  }
+  test::TempDir dir;
+};
+
+TEST_F(RunInputsTest, EveryFileReadIsHashed) {
+  const RunInputs inputs = describe();
+  EXPECT_EQ(inputs.scene_file, dir.path("scene.toml"));
+  ASSERT_EQ(inputs.files.size(), 4u);
+  EXPECT_EQ(inputs.files[0].role, "scene");
+  EXPECT_EQ(inputs.files[1].role, "warp");
+  EXPECT_EQ(inputs.files[2].role, "weft");
+  EXPECT_EQ(inputs.files[3].role, "body block");
+  EXPECT_EQ(inputs.files[1].sha256, sha256_of_file(dir.path("warp.csv")));
+  EXPECT_EQ(input_change(inputs, describe()), "");
+}
+
+TEST_F(RunInputsTest, AChangedFileIsNamed) {
+  const RunInputs before = describe();
+  dir.write("weft.csv", "strain,tension_N_per_m\n0,0\n1,301\n");
+  const std::string change = input_change(before, describe());
+  EXPECT_NE(change.find("weft"), std::string::npos) << change;
+  EXPECT_NE(change.find("has changed"), std::string::npos) << change;
+}
+
+TEST_F(RunInputsTest, ReadBackFromResultJson) {
+  dir.write("result.json",
+            "{\"scene_file\": \"/s/scene.toml\", \"overrides\": [{\"key\": \"solver.C\", \"value\": \"3\"}],"
+            " \"inputs\": [{\"role\": \"scene\", \"path\": \"/s/scene.toml\", \"sha256\": \"ab\"}]}");
+  const RunInputs inputs = read_run_inputs(dir.path("result.json"));
+  EXPECT_EQ(inputs.scene_file, "/s/scene.toml");
+  ASSERT_EQ(inputs.overrides.size(), 1u);
+  EXPECT_EQ(inputs.overrides[0].key, "solver.C");
+  EXPECT_EQ(inputs.overrides[0].value, "3");
+  ASSERT_EQ(inputs.files.size(), 1u);
+  EXPECT_EQ(inputs.files[0].sha256, "ab");
+}
+
+TEST_F(RunInputsTest, ResultJsonWithoutInputsIsRefusedNamingIt) {
+  for (const char* text : {"", "{}", "{\"scene_file\": 3}", "[1, 2]", "{\"scene_file\": \"a\", \"overrides\": []}"}) {
+    dir.write("result.json", text);
+    try {
+      read_run_inputs(dir.path("result.json"));
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("result.json"), std::string::npos) << error.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fabform
