@@ -1,7 +1,8 @@
 #pragma once
-// How many threads a solve may use: OpenMP's loops over nodes and springs and the OpenBLAS
-// threads under CHOLMOD's dense kernels follow one setting (CHOLMOD's own OpenMP loops run on
-// the calling thread: see sparse_cholesky.cpp).
+// How many threads a solve may use: OpenMP's loops over nodes and springs follow it. Every
+// solver gives the same bits for any thread count: loops write per node or per spring and sum
+// in a fixed order; OpenBLAS under CHOLMOD runs on one thread and CHOLMOD's own OpenMP loops on
+// the calling thread (sparse_cholesky.cpp).
 
 namespace fabform {
 
@@ -9,7 +10,7 @@ namespace fabform {
 /// work (and OpenMP's spinning threads steal cores from other processes on a loaded machine).
 constexpr int kMinParallelItems = 8192;
 
-/// Sets the thread count of every parallel part (n ≥ 1).
+/// Sets the thread count of the parallel loops (n ≥ 1).
 void use_threads(int n);
 
 }  // namespace fabform

@@ -36,15 +36,18 @@ double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x
 double stretch_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
   const std::vector<Spring>& springs = model.grid.springs();
   const auto count = static_cast<std::ptrdiff_t>(springs.size());
-  double energy = 0.0;
-  // A static schedule sums in the same order on every run with the same thread count.
-#pragma omp parallel for schedule(static) reduction(+ : energy) if (count >= kMinParallelItems)
+  // Each spring's energy in parallel, summed in spring order: the same bits for any thread
+  // count, so a line search decides alike on 1 or 2 threads (a reduction's order would not).
+  std::vector<double> energies(springs.size());
+#pragma omp parallel for schedule(static) if (count >= kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     const Spring& spring = springs[static_cast<std::size_t>(i)];
-    energy += spring_energy(x[static_cast<std::size_t>(spring.a)],
-                            x[static_cast<std::size_t>(spring.b)], spring,
-                            model.table(spring.direction));
+    energies[static_cast<std::size_t>(i)] =
+        spring_energy(x[static_cast<std::size_t>(spring.a)], x[static_cast<std::size_t>(spring.b)],
+                      spring, model.table(spring.direction));
   }
+  double energy = 0.0;
+  for (const double e : energies) energy += e;
   return energy;
 }
 
