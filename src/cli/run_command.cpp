@@ -5,7 +5,6 @@
 
 #include "cli/commands.hpp"
 #include "cli/interrupt_handlers.hpp"
-#include "cli/run_monitor.hpp"
 #include "fabform/error.hpp"
 #include "fabform/geometry/mesh_report.hpp"
 #include "fabform/model/equilibrium.hpp"
@@ -13,6 +12,7 @@
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/output/progress.hpp"
 #include "fabform/output/result_writer.hpp"
+#include "fabform/output/run_monitor.hpp"
 #include "fabform/output/results_folder.hpp"
 #include "fabform/output/run_inputs.hpp"
 #include "fabform/scene/model_builder.hpp"
@@ -132,8 +132,10 @@ void take_up_checkpoint(const std::string& dir, const Model& model, const RunInp
 // Says what the run's last state is when it is not simply where the solver stopped.
 void explain_ending(Summary* summary, const RunMonitor& monitor, const std::string& dir) {
   if (summary->termination == Termination::numerical_failure)
-    summary->message += "; the state written is iteration " +
-                        std::to_string(monitor.last_good_iteration()) + "'s, the last good one kept";
+    summary->message += monitor.last_good_iteration() < 0
+                            ? "; no state before it was good: the state written is the one found broken"
+                            : "; the state written is iteration " + std::to_string(monitor.last_good_iteration()) +
+                                  "'s, the last good one kept";
   if (summary->termination == Termination::interrupted)
     summary->message += "; go on with: fabform run --resume " + dir;
 }
@@ -167,7 +169,7 @@ int run(const RunArguments& args) {
                           [&](const IterationRecord& r) { monitor.observe(r); }, std::move(so_far));
   if (!args.quiet) progress.finish();
   explain_ending(&summary, monitor, dir);
-  const bool broke = summary.termination == Termination::numerical_failure;
+  const bool broke = summary.termination == Termination::numerical_failure && monitor.last_good_iteration() >= 0;
   publish(broke ? monitor.last_good_state() : state, summary);
   std::fprintf(stderr, "fabform: %s: %s\nfabform: results in %s\n", to_string(summary.termination).c_str(),
                summary.message.c_str(), dir.c_str());

@@ -120,6 +120,23 @@ INSTANTIATE_TEST_SUITE_P(
                "starts inside body"}),
     [](const auto& case_info) { return std::string(case_info.param.name); });
 
+// Tensions near the largest double on springs 5 m wide overflow at the start: the run stops as
+// a numerical failure naming the node and iteration, exits 4, and still writes its results.
+TEST_F(RunCommand, OverflowIsANumericalFailureWithItsResultsWritten) {
+  dir.write("huge.csv", "strain,tension_N_per_m\n0,0\n1,1e308\n");
+  dir.write("huge.toml",
+            "[fabric]\nsize_m = [10, 10]\ndivisions = [2, 2]\nwarp = \"huge.csv\"\nweft = \"huge.csv\"\n"
+            "[[constraint]]\nnodes = \"perimeter\"\n[initial]\nshape = \"bump\"\nheight_m = 5\n");
+  const Outcome o = run_fabform(dir, "run huge.toml --out out");
+  EXPECT_EQ(o.status, 4) << o.err;
+  const std::string json = slurp(dir.path("out/result.json"));
+  EXPECT_NE(json.find("\"termination\": \"numerical failure\""), std::string::npos) << json;
+  EXPECT_NE(json.find("NaN or Inf at node 4 in iteration 0"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"residual_N\": null"), std::string::npos) << json;
+  EXPECT_EQ(line_count(slurp(dir.path("out/fabric.obj"))), 1 + 9 + 4);
+  EXPECT_FALSE(exists("out/checkpoint.bin")) << "a broken run is not to be resumed";
+}
+
 TEST_F(RunCommand, BadInputLeavesAnExistingFolderUntouched) {
   ASSERT_EQ(run_fabform(dir, "run scene.toml --out out").status, 0);
   const std::string before = slurp(dir.path("out/result.json"));

@@ -1,9 +1,9 @@
-#include "cli/run_monitor.hpp"
+#include "fabform/output/run_monitor.hpp"
 
 #include <cmath>
 #include <utility>
 
-namespace fabform::cli {
+namespace fabform {
 namespace {
 
 // Copying the state after every iteration would cost a fast solver (dynamic steps, small
@@ -60,4 +60,4 @@ void RunMonitor::keep_good_state(const IterationRecord& record) {
   last_copy_seconds_ = std::chrono::duration<double>(last_copy_end_ - now).count();
 }
 
-}  // namespace fabform::cli
+}  // namespace fabform

@@ -1,5 +1,5 @@
 #pragma once
-// Watches a run iteration by iteration for the command line: shows progress, writes a
+// Watches a run iteration by iteration: shows progress, writes a
 // checkpoint every K iterations or M minutes (the scene's [output] settings), and keeps the
 // last state without a NaN or Inf, which is what a run that breaks numerically writes.
 #include <chrono>
@@ -10,7 +10,7 @@
 #include "fabform/solver/solver_state.hpp"
 #include "fabform/solver/summary.hpp"
 
-namespace fabform::cli {
+namespace fabform {
 
 /// Writes a results folder for a state and the summary so far.
 using Publisher = std::function<void(const SolverState&, const Summary&)>;
@@ -47,4 +47,4 @@ class RunMonitor {
   double last_copy_seconds_ = 0.0;
 };
 
-}  // namespace fabform::cli
+}  // namespace fabform
