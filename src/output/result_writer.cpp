@@ -9,6 +9,7 @@
 
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/output/checkpoint.hpp"
+#include "fabform/output/fabric_figures.hpp"
 #include "fabform/output/results_folder.hpp"
 
 namespace fabform {
@@ -19,6 +20,24 @@ namespace fs = std::filesystem;
 // JSON has no NaN or infinity; such values are written as null.
 nlohmann::json number(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json peak_json(const StrainPeak& p) {
+  return {{"strain", number(p.strain)},
+          {"spring_from_node", {p.i, p.j}},
+          {"at_m", {number(p.at_m.x()), number(p.at_m.y()), number(p.at_m.z())}}};
+}
+
+nlohmann::json figures_json(const FabricFigures& f) {
+  nlohmann::json histogram = {{"strain_edges", f.histogram.edges},
+                              {"warp_area_m2", f.histogram.warp_area_m2},
+                              {"weft_area_m2", f.histogram.weft_area_m2}};
+  return {{"area_flat_m2", f.area_flat_m2},
+          {"area_formed_m2", number(f.area_formed_m2)},
+          {"contact_area_m2", number(f.contact_area_m2)},
+          {"max_warp_strain", peak_json(f.max_warp)},
+          {"max_weft_strain", peak_json(f.max_weft)},
+          {"strain_histogram", histogram}};
 }
 
 std::string result_json(const RunRecord& run) {
@@ -50,6 +69,7 @@ std::string result_json(const RunRecord& run) {
   j["grid"] = {run.model.grid.nodes_warp(), run.model.grid.nodes_weft()};
   j["contact_nodes"] = run.check.contact_nodes;
   j["max_penetration_m"] = number(run.check.max_penetration_m);
+  j["figures"] = figures_json(fabric_figures(run.model, run.state.x, run.check.contact));
   j["modelled"] = {"stretch: warp and weft springs, tension-only piecewise-linear tables"};
   j["materials"] = {{"warp", run.scene.warp_path}, {"weft", run.scene.weft_path}};
   nlohmann::json bodies = nlohmann::json::array();

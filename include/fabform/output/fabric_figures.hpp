@@ -1,0 +1,42 @@
+#pragma once
+// The figures engineers read off a formed fabric: its area flat and formed, the area resting
+// on the bodies, the largest warp and weft strains and where they are, and how the fabric's
+// area spreads over strain (area-weighted histograms, warp and weft).
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fabform/model/model.hpp"
+
+namespace fabform {
+
+/// The most stretched spring of one direction: its strain, its first node's grid indices and
+/// its midpoint in the formed fabric.
+struct StrainPeak {
+  double strain = 0.0;
+  int i = -1, j = -1;
+  Eigen::Vector3d at_m = Eigen::Vector3d::Zero();
+};
+
+/// Bins [edges[b], edges[b+1]) of strain and the formed area of the cells whose mean warp
+/// (weft) strain falls in each; every cell counts once in each histogram.
+struct StrainHistogram {
+  std::vector<double> edges;
+  std::vector<double> warp_area_m2;
+  std::vector<double> weft_area_m2;
+};
+
+struct FabricFigures {
+  double area_flat_m2 = 0.0;    // W × H, the fabric before forming
+  double area_formed_m2 = 0.0;  // the formed cells, each as two triangles
+  double contact_area_m2 = 0.0;  // the share of formed area around the nodes on a body
+  StrainPeak max_warp;
+  StrainPeak max_weft;
+  StrainHistogram histogram;
+};
+
+/// The figures of the fabric at `x`; `contact` flags the nodes resting on a body (one per node).
+FabricFigures fabric_figures(const Model& model, const std::vector<Eigen::Vector3d>& x,
+                             const std::vector<unsigned char>& contact);
+
+}  // namespace fabform
