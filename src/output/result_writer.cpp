@@ -10,6 +10,7 @@
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/output/fabric_figures.hpp"
+#include "fabform/io/obj_text.hpp"
 #include "fabform/output/results_folder.hpp"
 
 namespace fabform {
@@ -114,6 +115,18 @@ std::string fabric_obj(const RunRecord& run) {
   return out.str();
 }
 
+// Every body as placed in the scene, in metres, in one mesh: what the fabric was formed over,
+// for reports and ParaView.
+std::string bodies_obj(const RunRecord& run) {
+  TriangleMesh all;
+  for (const RigidBody& body : run.model.bodies) {
+    const int offset = static_cast<int>(all.vertices.size());
+    all.vertices.insert(all.vertices.end(), body.mesh().vertices.begin(), body.mesh().vertices.end());
+    for (const auto& t : body.mesh().triangles) all.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+  return obj_text(all, "fabform " FABFORM_VERSION ": the bodies of scene " + run.scene.name + " as placed (metres)");
+}
+
 void vtk_field(std::ostringstream& out, const char* name, const std::vector<double>& values) {
   out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
   for (const double v : values) out << (std::isfinite(v) ? v : 0.0) << '\n';
@@ -167,6 +180,8 @@ void write_results(const std::string& dir, const RunRecord& run) {
   const Termination t = run.summary.termination;
   if (t != Termination::converged && t != Termination::numerical_failure)
     files.emplace_back("checkpoint.bin", checkpoint_bytes(run.state, run.summary));
+  if (t != Termination::running && !run.model.bodies.empty())  // checkpoints stay light
+    files.emplace_back("bodies.obj", bodies_obj(run));
   publish_results(dir, files);
 }
 

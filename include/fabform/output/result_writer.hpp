@@ -1,8 +1,9 @@
 #pragma once
 // Writes a run's results into a folder: result.json (the summary other tools read, with the
 // inputs that made it), convergence.csv (the history), fabric.obj (the formed fabric),
-// fabric.vtk (ParaView, with per-node warp and weft strain, contact flag and residual), and
-// checkpoint.bin (the state to resume from) unless the run converged or broke. The folder is
+// fabric.vtk (ParaView, with per-node warp and weft strain, contact flag and residual),
+// bodies.obj (the bodies as placed, in metres; not in checkpoints) and checkpoint.bin (the
+// state to resume from) unless the run converged or broke. The folder is
 // replaced at once (results_folder.hpp), so it never holds a half-written or mixed set.
 #include <string>
 #include <vector>

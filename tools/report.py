@@ -1,0 +1,284 @@
+#!/usr/bin/python3
+"""The report of a run, for engineers: RUN_DIR/report.html with the summary, the strain maps
+(the formed fabric over the bodies, coloured by warp and by weft strain, with a colour bar),
+the area-weighted strain histogram, the convergence plot, what was modelled, the warnings and
+the inputs with their SHA-256. It opens in a browser from the folder, without a server.
+
+Why: an engineer judges a fit by looking at it. The pictures are rendered headless with
+matplotlib (Agg), the fabric from fabric.obj and fabric.vtk, the bodies from bodies.obj.
+A run that did not converge says so at the top of the report and in its plot's title.
+
+Usage: /usr/bin/python3 tools/report.py RUN_DIR
+Writes into RUN_DIR: report.html, strain_warp.png, strain_weft.png, strain_histogram.png,
+convergence.png and convergence.svg, each under a temporary name first, then renamed.
+Exits 2 with one line naming the file when an input is missing or malformed.
+"""
+import html
+import json
+import math
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import numpy as np  # noqa: E402
+import plot_convergence as pc  # noqa: E402  (shared reader, plot and InputError)
+import raster  # noqa: E402
+
+VIEW = {"elevation_deg": 35, "azimuth_deg": -60}
+
+
+def read_obj(path: pathlib.Path) -> tuple:
+    """(vertices, faces) of an OBJ fabform wrote; faces as 0-based index lists."""
+    if not path.is_file():
+        raise pc.InputError(f"{path}: no such file")
+    vertices, faces = [], []
+    for number, line in enumerate(path.read_text().splitlines(), start=1):
+        words = line.split()
+        try:
+            if words and words[0] == "v":
+                vertices.append(tuple(float(w) for w in words[1:4]))
+            elif words and words[0] == "f":
+                faces.append([int(w.split("/")[0]) - 1 for w in words[1:]])
+        except ValueError:
+            raise pc.InputError(f"{path}:{number}: not a number")
+    if any(i < 0 or i >= len(vertices) for face in faces for i in face):
+        raise pc.InputError(f"{path}: a face refers to a vertex it does not have")
+    return vertices, faces
+
+
+def read_vtk_fields(path: pathlib.Path) -> dict:
+    """The POINT_DATA scalars of fabric.vtk, by name."""
+    if not path.is_file():
+        raise pc.InputError(f"{path}: no such file")
+    lines = path.read_text().splitlines()
+    fields, at = {}, 0
+    while at < len(lines):
+        words = lines[at].split()
+        if words[:1] == ["POINT_DATA"]:
+            count = int(words[1])
+        if words[:1] == ["SCALARS"]:
+            try:
+                fields[words[1]] = [float(v) for v in lines[at + 2: at + 2 + count]]
+            except (ValueError, UnboundLocalError):
+                raise pc.InputError(f"{path}:{at + 1}: field {words[1]} is malformed")
+            at += 2 + count
+            continue
+        at += 1
+    return fields
+
+
+def save_figure(fig, path: pathlib.Path) -> pathlib.Path:
+    temporary = path.with_name(path.name + ".tmp")
+    fig.savefig(temporary, format=path.suffix[1:], dpi=110)
+    temporary.replace(path)
+    return path
+
+
+def triangles_near(vertices, faces, box) -> np.ndarray:
+    """The body triangles near the fabric (within its box grown by half its size), (n, 3, 3)."""
+    if not faces:
+        return np.zeros((0, 3, 3))
+    corners = np.asarray(vertices)[np.asarray([f[:3] for f in faces])]
+    lo, hi = box
+    grow = 0.5 * (hi - lo)
+    near = np.all((corners.max(axis=1) >= lo - grow) & (corners.min(axis=1) <= hi + grow), axis=1)
+    return corners[near]
+
+
+def strain_map(run: pathlib.Path, fabric, strains, bodies, direction: str) -> pathlib.Path:
+    """The formed fabric over the bodies, coloured by strain, z-buffered (tools/raster.py)."""
+    plt = pc.pyplot()
+    from matplotlib import cm, colors
+
+    vertices, quads = np.asarray(fabric[0]), np.asarray(fabric[1])
+    values = np.asarray(strains, dtype=float)
+    split = np.concatenate([quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]])  # each cell as two triangles
+    cloth = vertices[split]
+    box = (vertices.min(axis=0), vertices.max(axis=0))
+    body = triangles_near(*bodies, box) if bodies else np.zeros((0, 3, 3))
+    every = np.concatenate([cloth, body])
+    view = raster.camera(**VIEW)
+    frame = raster.Frame(every.reshape(-1, 3), view, width=900)
+    owner, weights = raster.rasterise(frame, every)
+    light = view[2] + 0.5 * view[1] - 0.3 * view[0]
+    shading = raster.lambert(every, light / np.linalg.norm(light))
+    finite = values[np.isfinite(values)]
+    lo, hi = (finite.min(), finite.max()) if finite.size else (0.0, 1.0)
+    norm = colors.Normalize(vmin=lo, vmax=max(hi, lo + 1e-9))
+    cmap = plt.get_cmap("viridis")
+    image = np.ones(owner.shape + (3,))
+    on_cloth = (owner >= 0) & (owner < len(cloth))
+    t = owner[on_cloth]
+    value = np.sum(weights[on_cloth] * values[split[t]], axis=1)
+    image[on_cloth] = cmap(norm(value))[:, :3] * shading[t, None]
+    on_body = owner >= len(cloth)
+    image[on_body] = 0.85 * shading[owner[on_body], None]
+    fig, ax = plt.subplots(figsize=(7.6, 7.6 * frame.height / frame.width + 0.6))
+    ax.imshow(image, interpolation="antialiased")
+    ax.set_axis_off()
+    bar = fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.7)
+    bar.set_label(f"{direction} strain")
+    ax.set_title(f"{direction} strain of the formed fabric (grey: the bodies)", fontsize=10)
+    fig.tight_layout()
+    path = save_figure(fig, run / f"strain_{direction}.png")
+    plt.close(fig)
+    return path
+
+
+def histogram_picture(run: pathlib.Path, histogram: dict) -> pathlib.Path:
+    plt = pc.pyplot()
+    edges = histogram["strain_edges"]
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    width = (edges[1] - edges[0]) * 100 if len(edges) > 1 else 1.0
+    left = [e * 100 for e in edges[:-1]]
+    ax.bar([x + 0.25 * width for x in left], [a * 1e4 for a in histogram["warp_area_m2"]],
+           width=0.45 * width, align="edge", label="warp")
+    ax.bar([x + 0.5 * width for x in left], [a * 1e4 for a in histogram["weft_area_m2"]],
+           width=0.45 * width, align="edge", label="weft")
+    ax.set_xlabel("strain (%)")
+    ax.set_ylabel("fabric area (cm²)")
+    ax.set_title("area-weighted strain histogram", fontsize=10)
+    ax.legend()
+    ax.grid(True, axis="y", alpha=0.3)
+    fig.tight_layout()
+    path = save_figure(fig, run / "strain_histogram.png")
+    plt.close(fig)
+    return path
+
+
+def number(value, digits=4) -> str:
+    return "—" if value is None else f"{value:.{digits}g}"
+
+
+def peak_text(peak: dict) -> str:
+    i, j = peak["spring_from_node"]
+    x, y, z = (number(c * 1000, 4) for c in peak["at_m"])
+    return f"{number(peak['strain'] * 100, 3)} % at node ({i}, {j}), ({x}, {y}, {z}) mm"
+
+
+def summary_rows(result: dict) -> list:
+    f = result.get("figures", {})
+    flat, formed = f.get("area_flat_m2"), f.get("area_formed_m2")
+    rows = [
+        ("termination", f"{result['termination']}: {result['message']}"),
+        ("solver", f"{result['solver']} on {result.get('threads', 1)} thread(s)"),
+        ("iterations", result["iterations"]),
+        ("residual ‖V‖∞", f"{number(result['residual_N'])} N (tolerance {number(result['tolerance_N'])} N; "
+                          f"recomputed from positions {number(result['residual_recomputed_N'])} N)"),
+        ("time", f"{number(result['wall_seconds'], 3)} s in all, {number(result['solve_seconds'], 3)} s solving"),
+        ("nodes", f"{result['nodes']} ({result['grid'][0]} × {result['grid'][1]})"),
+        ("contact", f"{result['contact_nodes']} nodes, {number(f.get('contact_area_m2', 0) * 1e4)} cm²"),
+        ("largest penetration", f"{number(result['max_penetration_m'])} m"),
+    ]
+    if flat and formed:
+        rows.append(("fabric area", f"{number(flat * 1e4)} cm² flat → {number(formed * 1e4)} cm² formed "
+                                    f"({number((formed / flat - 1) * 100, 3)} %)"))
+    for direction in ("warp", "weft"):
+        if f"max_{direction}_strain" in f:
+            rows.append((f"largest {direction} strain", peak_text(f[f"max_{direction}_strain"])))
+    return rows
+
+
+def page(result: dict, pictures: list) -> str:
+    e = html.escape
+    converged = result.get("converged", False)
+    banner = ("" if converged else
+              f'<p class="alarm">This run did NOT converge ({e(result["termination"])}): '
+              f'{e(result["message"])}. Its fabric is where the solver stopped.</p>')
+    rows = "\n".join(f"<tr><th>{e(str(k))}</th><td>{e(str(v))}</td></tr>" for k, v in summary_rows(result))
+    figures = "\n".join(f'<figure><img src="{e(name)}" alt="{e(caption)}"><figcaption>{e(caption)}'
+                        f"</figcaption></figure>" for name, caption in pictures)
+    modelled = "".join(f"<li>{e(m)}</li>" for m in result.get("modelled", []))
+    warnings = "".join(f"<li>{e(w)}</li>" for w in result.get("warnings", [])) or "<li>none</li>"
+    inputs = "".join(f"<tr><td>{e(i['role'])}</td><td>{e(i['path'])}</td><td><code>{e(i['sha256'])}</code></td></tr>"
+                     for i in result.get("inputs", []))
+    overrides = ", ".join(f"{o['key']}={o['value']}" for o in result.get("overrides", [])) or "none"
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<title>fabform report: {e(result['scene'])}</title>
+<style>
+body {{ font-family: sans-serif; margin: 2em; max-width: 70em; color: #222; }}
+table {{ border-collapse: collapse; margin-bottom: 1.5em; }}
+th, td {{ text-align: left; padding: 0.25em 0.8em; border-bottom: 1px solid #ddd; vertical-align: top; }}
+figure {{ display: inline-block; margin: 0 1em 1em 0; }} img {{ max-width: 34em; }}
+.alarm {{ background: #fdd; border: 2px solid #c00; padding: 0.6em; font-weight: bold; }}
+.missing {{ color: #c00; font-weight: bold; }}
+</style></head>
+<body>
+<h1>{e(result['scene'])}: {e(result['termination'])}</h1>
+{banner}
+<h2>Summary</h2>
+<table>
+{rows}
+</table>
+<h2>Pictures</h2>
+{figures}
+<h2>What was modelled</h2><ul>{modelled}</ul>
+<h2>Warnings</h2><ul>{warnings}</ul>
+<h2>Inputs</h2>
+<table><tr><th>role</th><th>file</th><th>SHA-256</th></tr>{inputs}</table>
+<p>Overrides: {e(overrides)}. fabform {e(result.get('fabform_version', '?'))}.</p>
+<script>
+// A picture that did not load is said so in place (a report copied without its pictures).
+window.addEventListener("load", () => {{
+  const images = Array.from(document.images);
+  const shown = images.filter(i => i.complete && i.naturalWidth > 0);
+  for (const i of images.filter(i => !shown.includes(i))) {{
+    const note = document.createElement("p");
+    note.className = "missing";
+    note.textContent = "missing picture: " + i.getAttribute("src");
+    i.replaceWith(note);
+  }}
+  document.body.dataset.picturesShown = shown.length + "/" + images.length;
+}});
+</script>
+</body></html>
+"""
+
+
+def write_text(path: pathlib.Path, text: str) -> None:
+    temporary = path.with_name(path.name + ".tmp")
+    temporary.write_text(text, encoding="utf-8")
+    temporary.replace(path)
+
+
+def make_report(run: pathlib.Path) -> pathlib.Path:
+    result = pc.read_result(run)
+    for key in ("scene", "termination", "message", "iterations", "figures"):
+        if key not in result:
+            raise pc.InputError(f"{run / 'result.json'}: no '{key}' (written by an older fabform?)")
+    fabric = read_obj(run / "fabric.obj")
+    fields = read_vtk_fields(run / "fabric.vtk")
+    bodies = read_obj(run / "bodies.obj") if (run / "bodies.obj").is_file() else None
+    pc.plot_run(run, run / "convergence")
+    pictures = []
+    for direction in ("warp", "weft"):
+        name = f"strain_{direction}"
+        if name not in fields:
+            raise pc.InputError(f"{run / 'fabric.vtk'}: no field {name}")
+        strain_map(run, fabric, fields[name], bodies, direction)
+        pictures.append((f"{name}.png", f"{direction} strain over the bodies"))
+    if result["figures"]["strain_histogram"]["strain_edges"]:
+        histogram_picture(run, result["figures"]["strain_histogram"])
+        pictures.append(("strain_histogram.png", "fabric area by strain"))
+    pictures.append(("convergence.png", "convergence: ‖V‖∞ against iteration"))
+    path = run / "report.html"
+    write_text(path, page(result, pictures))
+    return path
+
+
+def main(argv) -> int:
+    if len(argv) != 1 or argv[0].startswith("-"):
+        print("usage: tools/report.py RUN_DIR", file=sys.stderr)
+        return 2
+    try:
+        path = make_report(pathlib.Path(argv[0]))
+    except pc.InputError as error:
+        print(f"report.py: {error}", file=sys.stderr)
+        return 2
+    print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
