@@ -42,10 +42,13 @@ class Frame:
         return np.stack([x, y, points @ self.towards], axis=-1)
 
 
-def rasterise(frame: Frame, triangles: np.ndarray) -> tuple:
+def rasterise(frame: Frame, triangles: np.ndarray, nearer_by=None) -> tuple:
     """For each pixel, the nearest triangle (-1 for none) and its barycentric weights.
-    `triangles` is (n, 3, 3): corners in scene coordinates."""
+    `triangles` is (n, 3, 3): corners in scene coordinates; `nearer_by` (n,), optional, counts
+    a triangle that much nearer the viewer than it is (a cloth resting on a body shows)."""
     p = frame.project(triangles.reshape(-1, 3)).reshape(-1, 3, 3)
+    if nearer_by is not None:
+        p[:, :, 2] += np.asarray(nearer_by)[:, None]
     h, w = frame.height, frame.width
     depth = np.full(h * w, -np.inf)
     owner = np.full(h * w, -1, dtype=np.int64)

@@ -99,7 +99,11 @@ def strain_map(run: pathlib.Path, fabric, strains, bodies, direction: str) -> pa
     every = np.concatenate([cloth, body])
     view = raster.camera(**VIEW)
     frame = raster.Frame(every.reshape(-1, 3), view, width=900)
-    owner, weights = raster.rasterise(frame, every)
+    # A cell resting on a body is a chord under its facets: within half a cell of the body's
+    # surface the fabric is drawn over it.
+    cell = np.linalg.norm(cloth[:, 0] - cloth[:, 2], axis=1).max()
+    nearer_by = np.concatenate([np.full(len(cloth), 0.5 * cell), np.zeros(len(body))])
+    owner, weights = raster.rasterise(frame, every, nearer_by)
     light = view[2] + 0.5 * view[1] - 0.3 * view[0]
     shading = raster.lambert(every, light / np.linalg.norm(light))
     finite = values[np.isfinite(values)]

@@ -12,7 +12,12 @@ namespace {
 struct RangeCount {
   int beyond = 0;
   double extreme = 0.0;
+  int collapsed = 0;  // compressed below kCollapsedStrain with nothing to resist it
+  double most_compressed = 0.0;
 };
+
+// Half its length gone: a tension-only spring there has folded flat, not merely gone slack.
+constexpr double kCollapsedStrain = -0.5;
 
 std::string describe(const TensionTable& table, const char* direction, const RangeCount& c,
                      int total) {
@@ -22,6 +27,16 @@ std::string describe(const TensionTable& table, const char* direction, const Ran
                 "reached %.4g): the table's end segment was extended",
                 c.beyond, total, direction, table.name().c_str(), table.min_strain(),
                 table.max_strain(), c.extreme);
+  return text;
+}
+
+std::string describe_collapse(const char* direction, const RangeCount& c, int total) {
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%d of %d %s springs are compressed below %.0f %% (down to %.3g %%): the tables "
+                "resist no compression and no bending is modelled, so nothing keeps the fabric "
+                "from folding flat there; this rest is degenerate",
+                c.collapsed, total, direction, 100 * kCollapsedStrain, 100 * c.most_compressed);
   return text;
 }
 
@@ -37,14 +52,20 @@ std::vector<std::string> table_range_warnings(const Model& model,
     const double strain = spring_strain(x[static_cast<std::size_t>(spring.a)],
                                         x[static_cast<std::size_t>(spring.b)], spring.rest_length);
     ++(is_warp ? warp_total : weft_total);
-    if (!table.beyond_range(strain)) continue;
     RangeCount& c = is_warp ? warp : weft;
+    if (strain < kCollapsedStrain && table.min_strain() >= 0.0) {
+      ++c.collapsed;
+      c.most_compressed = std::min(c.most_compressed, strain);
+    }
+    if (!table.beyond_range(strain)) continue;
     ++c.beyond;
     if (std::abs(strain) > std::abs(c.extreme)) c.extreme = strain;
   }
   std::vector<std::string> warnings;
   if (warp.beyond > 0) warnings.push_back(describe(model.warp, "warp", warp, warp_total));
   if (weft.beyond > 0) warnings.push_back(describe(model.weft, "weft", weft, weft_total));
+  if (warp.collapsed > 0) warnings.push_back(describe_collapse("warp", warp, warp_total));
+  if (weft.collapsed > 0) warnings.push_back(describe_collapse("weft", weft, weft_total));
   return warnings;
 }
 

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The README's pictures: runs every shipped scene into results/SCENE, writes its report
+# (tools/report.py) and copies its strain maps into docs/pictures/SCENE_strain_{warp,weft}.png.
+# Run after tools/setup.sh; takes about two minutes on two cores.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+mkdir -p docs/pictures
+for scene in mold torso dome; do
+  status=0
+  build/fabform run "scenes/$scene.toml" --out "results/$scene" --quiet || status=$?
+  if [[ $status -ne 0 && $status -ne 3 ]]; then exit "$status"; fi
+  /usr/bin/python3 tools/report.py "results/$scene"
+  for direction in warp weft; do
+    cp "results/$scene/strain_$direction.png" "docs/pictures/${scene}_strain_$direction.png"
+  done
+done
