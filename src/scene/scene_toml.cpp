@@ -1,7 +1,12 @@
 #include "fabform/scene/scene_toml.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "scene/scene_overrides.hpp"
@@ -23,17 +28,80 @@ int checked_int(TableReader& r, const std::string& key, long long value, long lo
   return static_cast<int>(value);
 }
 
+// The model builder refuses a start or a placed mesh reaching beyond 1e6 m (a unit mistake;
+// Embree works in single precision), naming the body or the initial shape; a huge fabric size
+// would be blamed on the initial shape, so the size is bounded here, where its key is known.
+constexpr double kMaxLength_m = 1e6;
+// An angle is written within one turn; far beyond it (1e300) the remainder is rounding noise,
+// and nothing downstream notices.
+constexpr double kMaxAngle_deg = 360.0;
+
+// %g, with the exponent as a scene writes it: 1e6, not 1e+06.
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  std::string out = text;
+  for (const char* padding : {"e+0", "e+", "e-0"}) {
+    const std::size_t at = out.find(padding);
+    if (at != std::string::npos) out.replace(at, std::string(padding).size(), padding[1] == '-' ? "e-" : "e");
+  }
+  return out;
+}
+
+bool has_control_character(const std::string& value) { return shown(value) != value; }
+
+void check_magnitude(TableReader& r, const std::string& key, double magnitude, double limit,
+                     const char* unit) {
+  if (magnitude > limit)
+    r.fail(key, "must be between -" + number_text(limit) + " and " + number_text(limit) + " " + unit);
+}
+
+double angle(TableReader& r, const std::string& key, double fallback, bool required = false) {
+  const double value = r.number(key, fallback, required);
+  check_magnitude(r, key, std::abs(value), kMaxAngle_deg, "degrees");
+  return value;
+}
+
+template <int N>
+Eigen::Matrix<double, N, 1> angles(TableReader& r, const std::string& key) {
+  const Eigen::Matrix<double, N, 1> value = r.vector<N>(key, Eigen::Matrix<double, N, 1>::Zero());
+  check_magnitude(r, key, value.cwiseAbs().maxCoeff(), kMaxAngle_deg, "degrees");
+  return value;
+}
+
+// A name or path that is empty or holds a control character is never what was meant: "" names
+// no file (or, for output.dir, the current folder), and names and paths are echoed into
+// one-line messages and file headers. Only a value written is checked; a key left out takes
+// its default.
+std::string plain_text(TableReader& r, const std::string& key, const std::string& fallback,
+                       bool required = false) {
+  std::string value = r.text(key, fallback, required);
+  if (r.has(key) && value.empty()) r.fail(key, "must not be empty");
+  if (has_control_character(value)) r.fail(key, "must not hold control characters (got '" + shown(value) + "')");
+  return value;
+}
+
+// The scene's name is its default results folder, results/NAME: one folder name, so that a run
+// cannot write beside or above results/.
+std::string read_scene_name(TableReader& r, const std::string& fallback) {
+  const std::string name = plain_text(r, "name", fallback);
+  if (name == "." || name == ".." || name.find_first_of("/\\") != std::string::npos)
+    r.fail("name", "must be a plain folder name (no / and not . or ..); output.dir takes a path");
+  return name;
+}
+
 void read_fabric(TableReader r, Scene* scene) {
   const Eigen::Vector2d size = r.vector<2>("size_m", Eigen::Vector2d::Zero(), true);
   if (!(size.array() > 0.0).all()) r.fail("size_m", "both sides must be positive");
+  if (size.maxCoeff() > kMaxLength_m) r.fail("size_m", "must be at most " + number_text(kMaxLength_m) + " m a side");
   const auto [n, m] = r.integer_pair("divisions", true);
   scene->grid = {size.x(), size.y(), checked_int(r, "divisions", n, 1, 10000),
                  checked_int(r, "divisions", m, 1, 10000)};
   scene->grid_where = r.locate_key("divisions");
   scene->origin_m = r.vector<3>("origin_m", Eigen::Vector3d::Zero());
-  scene->warp_path = resolve(scene->path, r.text("warp", "", true));
+  scene->warp_path = resolve(scene->path, plain_text(r, "warp", "", true));
   scene->warp_where = r.locate_key("warp");
-  scene->weft_path = resolve(scene->path, r.text("weft", "", true));
+  scene->weft_path = resolve(scene->path, plain_text(r, "weft", "", true));
   scene->weft_where = r.locate_key("weft");
   r.reject_unknown({"size_m", "divisions", "origin_m", "warp", "weft"});
 }
@@ -41,14 +109,14 @@ void read_fabric(TableReader r, Scene* scene) {
 BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t index) {
   BodySpec body;
   body.where = r.where();
-  body.name = r.text("name", "body" + std::to_string(index));
-  body.mesh_path = resolve(scene_path, r.text("mesh", "", true));
+  body.name = plain_text(r, "name", "body" + std::to_string(index));
+  body.mesh_path = resolve(scene_path, plain_text(r, "mesh", "", true));
   body.mesh_where = r.locate_key("mesh");
   body.units = r.text("units", "", true);
   if (!parse_length_unit(body.units, &body.placement.metres_per_unit))
-    r.fail("units", "must be one of m, cm, mm, in (got '" + body.units + "')");
+    r.fail("units", "must be one of m, cm, mm, in (got '" + shown(body.units) + "')");
   body.placement.scale = r.number("scale", 1.0);
-  body.placement.rotation_deg = r.vector<3>("rotation_deg", Eigen::Vector3d::Zero());
+  body.placement.rotation_deg = angles<3>(r, "rotation_deg");
   body.placement.translation_m = r.vector<3>("translation_m", Eigen::Vector3d::Zero());
   std::string field;
   if (const std::string why = body.placement.invalid_reason(&field); !why.empty()) r.fail(field, why);
@@ -56,44 +124,71 @@ BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t ind
   return body;
 }
 
-NodeSetSpec read_selector(TableReader& r, std::string* text) {
-  static const std::vector<std::string> selectors = {"nodes", "node", "nearest_m", "box_m"};
-  int given = 0;
-  for (const auto& s : selectors) given += r.has(s) ? 1 : 0;
-  if (given != 1) r.fail("nodes", "give exactly one of nodes, node, nearest_m, box_m");
+// A node by grid index (one off the grid is reported by the model builder, which knows the grid).
+NodeSetSpec read_node_index(TableReader& r, std::string* text) {
+  const auto [i, j] = r.integer_pair("node", true);
   NodeSetSpec spec;
-  if (r.has("nodes")) {
-    *text = r.text("nodes", "");
-    if (!parse_named_node_set(*text, &spec))
-      r.fail("nodes", "unknown node set '" + *text +
-                          "' (known: perimeter, corners, edge:left, edge:right, edge:bottom, "
-                          "edge:top)");
-  } else if (r.has("node")) {
-    const auto [i, j] = r.integer_pair("node", true);
-    spec.kind = NodeSetSpec::Kind::index;
-    spec.i = checked_int(r, "node", i, 0, 100000);
-    spec.j = checked_int(r, "node", j, 0, 100000);
-    *text = "node [" + std::to_string(i) + ", " + std::to_string(j) + "]";
-  } else if (r.has("nearest_m")) {
-    spec.kind = NodeSetSpec::Kind::nearest;
-    spec.point = r.vector<2>("nearest_m", Eigen::Vector2d::Zero(), true);
-    *text = "nearest_m";
-  } else {
-    const toml::node* n = r.take("box_m");
-    const toml::array* corners = n->as_array();
-    if (!corners || corners->size() != 2) r.fail("box_m", "must be [[x0, y0], [x1, y1]]");
-    spec.kind = NodeSetSpec::Kind::box;
-    spec.box_min = r.read_vector<2>((*corners)[0], "box_m");
-    spec.box_max = r.read_vector<2>((*corners)[1], "box_m");
-    *text = "box_m";
-  }
+  spec.kind = NodeSetSpec::Kind::index;
+  spec.i = checked_int(r, "node", i, 0, 100000);
+  spec.j = checked_int(r, "node", j, 0, 100000);
+  *text = "node [" + std::to_string(i) + ", " + std::to_string(j) + "]";
   return spec;
 }
 
-ConstraintSpec read_constraint(TableReader r) {
+// "A point of the flat fabric", from its lower-left corner: a point off the fabric is usually
+// written in scene coordinates (origin_m added) or in the wrong unit, and would silently pick
+// whichever edge node is nearest.
+NodeSetSpec read_nearest(TableReader& r, const GridSpec& grid, std::string* text) {
+  NodeSetSpec spec;
+  spec.kind = NodeSetSpec::Kind::nearest;
+  spec.point = r.vector<2>("nearest_m", Eigen::Vector2d::Zero(), true);
+  const Eigen::Vector2d& p = spec.point;
+  if (!(p.x() >= 0.0 && p.x() <= grid.width_m && p.y() >= 0.0 && p.y() <= grid.height_m))
+    r.fail("nearest_m", "must lie on the fabric: x from 0 to " + number_text(grid.width_m) +
+                            ", y from 0 to " + number_text(grid.height_m) +
+                            " m from its lower-left corner");
+  *text = "nearest_m";
+  return spec;
+}
+
+// A box may reach beyond the fabric (it selects the nodes inside), but its corners come in
+// order: reversed, it would select nothing.
+NodeSetSpec read_box(TableReader& r, std::string* text) {
+  const toml::node* n = r.take("box_m");
+  const toml::array* corners = n->as_array();
+  if (!corners || corners->size() != 2) r.fail("box_m", "must be [[x0, y0], [x1, y1]]");
+  NodeSetSpec spec;
+  spec.kind = NodeSetSpec::Kind::box;
+  spec.box_min = r.read_vector<2>((*corners)[0], "box_m");
+  spec.box_max = r.read_vector<2>((*corners)[1], "box_m");
+  if (!(spec.box_min.array() <= spec.box_max.array()).all())
+    r.fail("box_m", "must be [[x0, y0], [x1, y1]] with x0 <= x1 and y0 <= y1");
+  *text = "box_m";
+  return spec;
+}
+
+NodeSetSpec read_selector(TableReader& r, const GridSpec& grid, std::string* text) {
+  static const std::vector<std::string> selectors = {"nodes", "node", "nearest_m", "box_m"};
+  int given = 0;
+  for (const auto& s : selectors) given += r.has(s) ? 1 : 0;
+  // None or several: the constraint as a whole is wrong, not one of its keys.
+  if (given != 1) throw InputError(r.where(), "give exactly one of nodes, node, nearest_m, box_m");
+  if (r.has("node")) return read_node_index(r, text);
+  if (r.has("nearest_m")) return read_nearest(r, grid, text);
+  if (r.has("box_m")) return read_box(r, text);
+  NodeSetSpec spec;
+  *text = r.text("nodes", "");
+  if (!parse_named_node_set(*text, &spec))
+    r.fail("nodes", "unknown node set '" + shown(*text) +
+                        "' (known: perimeter, corners, edge:left, edge:right, edge:bottom, "
+                        "edge:top)");
+  return spec;
+}
+
+ConstraintSpec read_constraint(TableReader r, const GridSpec& grid) {
   ConstraintSpec constraint;
   constraint.where = r.where();
-  constraint.nodes = read_selector(r, &constraint.nodes_text);
+  constraint.nodes = read_selector(r, grid, &constraint.nodes_text);
   const std::string axes = r.text("axes", "xyz");
   if (!parse_axes(axes, &constraint.axes))
     r.fail("axes", "must name each of x, y, z at most once, e.g. \"xyz\" or \"xy\"");
@@ -105,7 +200,7 @@ void read_initial(TableReader r, Scene* scene) {
   scene->initial_where = r.where();
   const std::string shape = r.text("shape", "flat");
   if (!parse_initial_kind(shape, &scene->initial.kind))
-    r.fail("shape", "must be one of flat, lift, bump, wrap (got '" + shape + "')");
+    r.fail("shape", "must be one of flat, lift, bump, wrap (got '" + shown(shape) + "')");
   using Kind = InitialShape::Kind;
   InitialShape& s = scene->initial;
   const bool raises = s.kind == Kind::lift || s.kind == Kind::bump;
@@ -113,7 +208,7 @@ void read_initial(TableReader r, Scene* scene) {
   if (s.kind == Kind::wrap) {
     s.axis_xy_m = r.vector<2>("axis_m", Eigen::Vector2d::Zero(), true);
     s.radius_m = r.number("radius_m", 0.0, true);
-    s.facing_deg = r.number("facing_deg", 0.0, true);
+    s.facing_deg = angle(r, "facing_deg", 0.0, true);
     s.span_deg = r.number("span_deg", 0.0, true);
   }
   std::string field;
@@ -128,7 +223,7 @@ void read_solver(TableReader r, Scene* scene) {
   s.name = r.text("name", "relax");
   bool known = false;
   for (const auto& name : solver_names()) known = known || name == s.name;
-  if (!known) r.fail("name", "unknown solver '" + s.name + "' (see `fabform solvers`)");
+  if (!known) r.fail("name", "unknown solver '" + shown(s.name) + "' (see `fabform solvers`)");
   s.relax.tolerance_N = s.newton.tolerance_N = s.dynamic.tolerance_N =
       r.number("tolerance_N", s.relax.tolerance_N);
   if (r.has("max_iterations"))
@@ -154,7 +249,7 @@ void read_solver(TableReader r, Scene* scene) {
 }
 
 void read_output(TableReader r, Scene* scene) {
-  const std::string dir = r.text("dir", "");
+  const std::string dir = plain_text(r, "dir", "");
   scene->output_dir = resolve(scene->path, dir);
   CheckpointSpec& c = scene->checkpoint;
   c.every_iterations = checked_int(
@@ -166,19 +261,73 @@ void read_output(TableReader r, Scene* scene) {
   r.reject_unknown({"dir", "checkpoint_every_iterations", "checkpoint_every_minutes"});
 }
 
+// ---------------------------------------------------------------------------------------------
+// toml++ gives a syntax error's line but not its key (an integer beyond 64 bits, 1e999, a
+// duplicate key). Where the line is a plain `key = value` under a [table] or [[array]] header,
+// the dotted key is recovered, so the message names it like any other. A hand-written scan,
+// not std::regex, whose recursion a fuzzed line of a megabyte would overflow.
+
+bool is_bare_key_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+}
+
+// The bare (possibly dotted) key starting at `from`, or "" when there is none.
+std::string bare_key_at(std::string_view line, std::size_t from) {
+  std::size_t end = from;
+  while (end < line.size() && is_bare_key_char(line[end])) ++end;
+  return std::string(line.substr(from, end - from));
+}
+
+std::size_t skip_blanks(std::string_view line, std::size_t at) {
+  while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
+  return at;
+}
+
+// Follows [table] and [[array]] headers; `prefix` becomes "fabric" or "body.1".
+void follow_header(std::string_view line, std::map<std::string, int>* arrays, std::string* prefix) {
+  std::size_t at = skip_blanks(line, 0);
+  if (at >= line.size() || line[at] != '[') return;
+  const bool array = at + 1 < line.size() && line[at + 1] == '[';
+  const std::string name = bare_key_at(line, skip_blanks(line, at + (array ? 2 : 1)));
+  *prefix = array ? name + "." + std::to_string((*arrays)[name]++) : name;
+}
+
+// The dotted key of a `key = value` line, or "" for any other line.
+std::string key_of_line(std::string_view line, const std::string& prefix) {
+  const std::size_t at = skip_blanks(line, 0);
+  const std::string key = bare_key_at(line, at);
+  const std::size_t equals = skip_blanks(line, at + key.size());
+  if (key.empty() || equals >= line.size() || line[equals] != '=') return "";
+  return prefix.empty() ? key : prefix + "." + key;
+}
+
+std::string key_on_line(std::string_view text, int line_number) {
+  std::map<std::string, int> arrays;
+  std::string prefix;
+  std::size_t start = 0;
+  for (int line = 1; start <= text.size(); ++line) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string_view here = text.substr(start, end - start);
+    if (line == line_number) return key_of_line(here, prefix);
+    follow_header(here, &arrays, &prefix);
+    start = end + 1;
+  }
+  return "";
+}
+
 Scene read_scene(const toml::table& root, const std::string& path,
                  const OverriddenKeys& overridden) {
   Scene scene;
   scene.path = path;
   TableReader r(&root, "", path, overridden);
   TableReader info = r.table("scene", false);
-  scene.name = info.text("name", fs::path(path).stem().string());
+  scene.name = read_scene_name(info, fs::path(path).stem().string());
   scene.description = info.text("description", "");
   info.reject_unknown({"name", "description"});
   read_fabric(r.table("fabric", true), &scene);
   const auto bodies = r.tables("body");
   for (std::size_t b = 0; b < bodies.size(); ++b) scene.bodies.push_back(read_body(bodies[b], path, b));
-  for (auto& c : r.tables("constraint")) scene.constraints.push_back(read_constraint(c));
+  for (auto& c : r.tables("constraint")) scene.constraints.push_back(read_constraint(c, scene.grid));
   read_initial(r.table("initial", false), &scene);
   read_solver(r.table("solver", false), &scene);
   read_output(r.table("output", false), &scene);
@@ -194,8 +343,8 @@ Scene parse_scene(std::string_view text, const std::string& path,
   try {
     root = toml::parse(text, path);
   } catch (const toml::parse_error& error) {
-    throw InputError({path, static_cast<int>(error.source().begin.line), ""},
-                     std::string(error.description()));
+    const int line = static_cast<int>(error.source().begin.line);
+    throw InputError({path, line, key_on_line(text, line)}, std::string(error.description()));
   }
   return read_scene(root, path, apply_overrides(root, overrides));
 }

@@ -2,6 +2,7 @@
 // Reads one TOML table of a scene: typed values with their dotted key and line for errors,
 // and the keys left unread reported as unknown. Internal to the scene parser.
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
 #include <vector>
@@ -15,6 +16,23 @@ namespace fabform {
 
 /// Where values set on the command line are said to come from.
 inline const char* const kOverrideSource = "command line --set";
+
+/// A value or key echoed in a message: errors are one line, so control characters are shown
+/// escaped (\x0a).
+inline std::string shown(const std::string& value) {
+  std::string out;
+  for (const char c : value) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f) {
+      out += c;
+      continue;
+    }
+    char escaped[8];
+    std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+    out += escaped;
+  }
+  return out;
+}
 
 /// Dotted keys set on the command line; a value there, or inside one, is blamed on it.
 using OverriddenKeys = std::set<std::string>;
@@ -153,7 +171,7 @@ class TableReader {
       if (used_.count(name)) continue;
       std::string list;
       for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw InputError(locate(&value, dotted(name)),
+      throw InputError(locate(&value, dotted(shown(name))),
                        "unknown key" + (list.empty() ? std::string() : " (known here: " + list + ")"));
     }
   }

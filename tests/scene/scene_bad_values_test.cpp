@@ -1,0 +1,604 @@
+// Every key of the scene format swept with bad values (issue "Reliability", item 1). One table,
+// key_table(), lists each key, its type and the verdict on each kind of bad value; the cases
+// are generated from it. Each case starts from a valid scene holding every key, replaces or
+// removes one, and expects either an InputError whose key is the dotted key and whose message
+// gives the file, the line and the key ("sweep.toml:12: solver.C: ..."), or, where the table
+// says the value is legitimate, a scene that parses. A few values pass the parser and are
+// refused when the model is built, which knows the grid, the files and the placed geometry;
+// the table says so (verdict B) and the case builds the model to check it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fabform/scene/model_builder.hpp"
+#include "fabform/scene/scene_toml.hpp"
+#include "test_paths.hpp"
+
+namespace fabform {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// The valid scene every case starts from: every key of the format, written once, with the
+// repository's material tables and dome mold. Two variants, as the initial shape's keys depend
+// on the shape: lift (height_m) and wrap (axis_m, radius_m, facing_deg, span_deg).
+
+enum class Base { lift, wrap };
+
+struct Entry {
+  std::string key;
+  std::string value;  // TOML text; may span lines
+};
+
+struct Section {
+  std::string name;    // the dotted prefix of its keys: "fabric", "body.0"
+  std::string header;  // "[fabric]", "[[body]]"
+  std::vector<Entry> entries;
+};
+
+struct SceneText {
+  std::vector<Entry> root;  // keys before the first header (a section replaced by a value)
+  std::vector<Section> sections;
+};
+
+Section initial_section(Base base) {
+  if (base == Base::lift) return {"initial", "[initial]", {{"shape", "\"lift\""}, {"height_m", "0.01"}}};
+  return {"initial", "[initial]",
+          {{"shape", "\"wrap\""}, {"axis_m", "[0.05, 0.05]"}, {"radius_m", "0.05"},
+           {"facing_deg", "0.0"}, {"span_deg", "90.0"}}};
+}
+
+// A 10 x 10 cm knit, 4 x 4 divisions, 5 cm above a 3 cm dome, held by one constraint of each
+// selector kind. The scene's own path is scenes/sweep.toml, so paths are relative to scenes/.
+SceneText base_scene(Base base) {
+  return {{},
+          {{"scene", "[scene]", {{"name", "\"sweep\""}, {"description", "\"every key of the scene format\""}}},
+           {"fabric", "[fabric]",
+            {{"size_m", "[0.1, 0.1]"},
+             {"divisions", "[4, 4]"},
+             {"origin_m", "[0.0, 0.0, 0.05]"},
+             {"warp", "\"../materials/white-swim-solid_warp.csv\""},
+             {"weft", "\"../materials/white-swim-solid_weft.csv\""}}},
+           {"body.0", "[[body]]",
+            {{"name", "\"dome\""},
+             {"mesh", "\"../molds/dome_hemisphere_r30mm.obj\""},
+             {"units", "\"mm\""},
+             {"scale", "1.0"},
+             {"rotation_deg", "[0.0, 0.0, 90.0]"},
+             {"translation_m", "[0.05, 0.05, 0.0]"}}},
+           {"constraint.0", "[[constraint]]", {{"nodes", "\"perimeter\""}, {"axes", "\"xyz\""}}},
+           {"constraint.1", "[[constraint]]", {{"node", "[2, 2]"}, {"axes", "\"z\""}}},
+           {"constraint.2", "[[constraint]]", {{"nearest_m", "[0.025, 0.025]"}, {"axes", "\"xy\""}}},
+           {"constraint.3", "[[constraint]]", {{"box_m", "[[0.0, 0.0], [0.03, 0.03]]"}, {"axes", "\"xyz\""}}},
+           initial_section(base),
+           {"solver", "[solver]",
+            {{"name", "\"relax\""},
+             {"tolerance_N", "1e-3"},
+             {"max_iterations", "1000"},
+             {"C", "2.0"},
+             {"regularization", "1e-8"},
+             {"armijo", "1e-4"},
+             {"max_backtracks", "60"},
+             {"areal_density_kg_m2", "0.2"},
+             {"damping", "0.05"},
+             {"time_step_fraction", "0.9"},
+             {"stretch_limit", "0.0"},
+             {"threads", "1"}}},
+           {"output", "[output]",
+            {{"dir", "\"out\""}, {"checkpoint_every_iterations", "100"}, {"checkpoint_every_minutes", "10.0"}}}}};
+}
+
+std::string scene_path() { return test::source_path("scenes/sweep.toml"); }
+
+// The text, and the line each dotted key and each section header is written on.
+struct Rendered {
+  std::string text;
+  std::map<std::string, int> line_of;
+};
+
+Rendered render(const SceneText& scene) {
+  Rendered r;
+  int line = 1;
+  const auto put = [&](const std::string& name, const std::string& text) {
+    r.line_of.emplace(name, line);
+    r.text += text + "\n";
+    for (const char c : text) line += c == '\n' ? 1 : 0;
+    ++line;
+  };
+  for (const auto& e : scene.root) put(e.key, e.key + " = " + e.value);
+  for (const auto& s : scene.sections) {
+    put(s.name.substr(0, s.name.find('.')), s.header);  // "body": its first element's header
+    r.line_of.emplace(s.name, line - 1);
+    for (const auto& e : s.entries) put(s.name + "." + e.key, e.key + " = " + e.value);
+  }
+  return r;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The table
+
+enum class Type {
+  number,       // a float (an integer is also a number)
+  integer,      // an integer within the key's range
+  text,         // a free string, a name or a path
+  choice,       // one of a fixed list of words
+  vec2,         // [x, y]
+  vec3,         // [x, y, z]
+  int_pair,     // [i, j], integers
+  box,          // [[x0, y0], [x1, y1]]
+  table,        // a [section]
+  table_array,  // an [[array]] of sections
+  only_extras,  // a key seen from another base scene: only its listed values
+};
+
+// R: refused by parse_scene; A: accepted (legitimate); B: accepted by the parser, refused by
+// build_model (a file, the grid or the placed geometry is needed to see it); _: not applicable.
+enum class Verdict { _, R, A, B };
+using V = Verdict;
+constexpr V _ = V::_, R = V::R, A = V::A, B = V::B;
+
+// A key-specific value: `value` nullptr removes the key; `names` is the key the message must
+// name when that is not the row's (e.g. a constraint's selector missing names the constraint).
+struct Extra {
+  const char* label;
+  const char* value;
+  Verdict verdict;
+  const char* names;
+};
+
+struct KeyRow {
+  const char* key;  // dotted, as messages spell it
+  Type type;
+  Base base;
+  // Verdicts on: the key left out; a negative, zero and huge value (1e300, or 99999999999 for
+  // an integer); an empty string. Wrong types, NaN, infinities and numbers TOML cannot hold are
+  // always refused and need no column.
+  Verdict missing, negative, zero, huge, empty;
+  const char* builder_names;  // for B: the key build_model names, "" = the row's key
+  std::vector<Extra> extras;
+};
+
+constexpr const char* kRemove = nullptr;
+constexpr const char* kSame = "";
+
+const std::vector<KeyRow>& key_table() {
+  using T = Type;
+  const Base lift = Base::lift, wrap = Base::wrap;
+  static const std::vector<KeyRow> rows = {
+      // key                             type          base  miss neg zero huge empty builder
+      {"scene",                          T::table,     lift, A,   _,  _,   _,   _,    "", {}},
+      {"scene.name",                     T::text,      lift, A,   _,  _,   _,   R,    "",
+       {{"dot_dot", "\"..\"", R, kSame}, {"dot", "\".\"", R, kSame}, {"slash", "\"runs/a\"", R, kSame},
+        {"backslash", "\"a\\\\b\"", R, kSame}, {"newline", "\"a\\nb\"", R, kSame},
+        {"spaces", "\"mold fit 2\"", A, kSame}, {"digits", "\"007\"", A, kSame}}},
+      {"scene.description",              T::text,      lift, A,   _,  _,   _,   A,    "",
+       {{"newline", "\"two\\nlines\"", A, kSame}}},
+      {"fabric",                         T::table,     lift, R,   _,  _,   _,   _,    "", {}},
+      {"fabric.size_m",                  T::vec2,      lift, R,   R,  R,   R,   _,    "",
+       {{"one_side_zero", "[0.1, 0.0]", R, kSame}, {"one_side_negative", "[0.1, -0.1]", R, kSame},
+        {"beyond_1e6_m", "[2e6, 0.1]", R, kSame}, {"1e6_m", "[1e6, 1e6]", A, kSame}}},
+      {"fabric.divisions",               T::int_pair,  lift, R,   R,  R,   R,   _,    "",
+       {{"one_zero", "[4, 0]", R, kSame}, {"beyond_10000", "[10001, 4]", R, kSame},
+        {"10000_by_1", "[10000, 1]", A, kSame}}},
+      {"fabric.origin_m",                T::vec3,      lift, A,   A,  A,   B,   _,    "initial", {}},
+      {"fabric.warp",                    T::text,      lift, R,   _,  _,   _,   R,    "",
+       {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
+      {"fabric.weft",                    T::text,      lift, R,   _,  _,   _,   R,    "",
+       {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
+      {"body",                           T::table_array, lift, A, _,  _,   _,   _,    "", {}},
+      {"body.0.name",                    T::text,      lift, A,   _,  _,   _,   R,    "",
+       {{"newline", "\"a\\nb\"", R, kSame}}},
+      {"body.0.mesh",                    T::text,      lift, R,   _,  _,   _,   R,    "",
+       {{"newline", "\"a\\nb.obj\"", R, kSame}, {"no_such_file", "\"nowhere.obj\"", B, kSame}}},
+      {"body.0.units",                   T::choice,    lift, R,   _,  _,   _,   R,    "",
+       {{"upper_case", "\"MM\"", R, kSame}, {"word", "\"millimetres\"", R, kSame}, {"newline", "\"m\\nm\"", R, kSame},
+        {"m", "\"m\"", A, kSame}, {"cm", "\"cm\"", A, kSame}, {"in", "\"in\"", A, kSame}}},
+      {"body.0.scale",                   T::number,    lift, A,   R,  R,   B,   _,    "body.0",
+       {{"a_thousandth", "0.001", A, kSame}}},
+      {"body.0.rotation_deg",            T::vec3,      lift, A,   A,  A,   R,   _,    "",
+       {{"full_turns", "[360.0, -360.0, 0.0]", A, kSame}, {"beyond_a_turn", "[0.0, 361.0, 0.0]", R, kSame}}},
+      {"body.0.translation_m",           T::vec3,      lift, A,   A,  A,   B,   _,    "body.0", {}},
+      {"constraint",                     T::table_array, lift, A, _,  _,   _,   _,    "", {}},
+      {"constraint.0.nodes",             T::choice,    lift, _,   _,  _,   _,   R,    "",
+       {{"missing", kRemove, R, "constraint.0"}, {"upper_case", "\"Perimeter\"", R, kSame},
+        {"edge_without_side", "\"edge\"", R, kSame}, {"corners", "\"corners\"", A, kSame},
+        {"edge_left", "\"edge:left\"", A, kSame}, {"edge_right", "\"edge:right\"", A, kSame},
+        {"edge_bottom", "\"edge:bottom\"", A, kSame}, {"edge_top", "\"edge:top\"", A, kSame}}},
+      {"constraint.0.axes",              T::choice,    lift, A,   _,  _,   _,   R,    "",
+       {{"repeated", "\"xx\"", R, kSame}, {"upper_case", "\"XYZ\"", R, kSame}, {"spaced", "\"x y\"", R, kSame},
+        {"reordered", "\"zyx\"", A, kSame}, {"one_axis", "\"x\"", A, kSame}}},
+      {"constraint.1.node",              T::int_pair,  lift, _,   R,  A,   R,   _,    "",
+       {{"missing", kRemove, R, "constraint.1"}, {"second_selector", "[2, 2]\nnodes = \"corners\"", R, "constraint.1"},
+        {"last_node", "[4, 4]", A, kSame}, {"off_the_grid", "[5, 0]", B, "constraint.1"}}},
+      {"constraint.2.nearest_m",         T::vec2,      lift, _,   R,  A,   R,   _,    "",
+       {{"missing", kRemove, R, "constraint.2"}, {"off_the_fabric", "[0.2, 0.05]", R, kSame},
+        {"far_corner", "[0.1, 0.1]", A, kSame}}},
+      {"constraint.3.box_m",             T::box,       lift, _,   A,  A,   A,   _,    "",
+       {{"missing", kRemove, R, "constraint.3"}, {"reversed", "[[0.03, 0.03], [0.0, 0.0]]", R, kSame},
+        {"off_the_fabric", "[[0.2, 0.2], [0.3, 0.3]]", B, "constraint.3"}}},
+      {"initial",                        T::table,     lift, A,   _,  _,   _,   _,    "", {}},
+      {"initial.shape",                  T::choice,    lift, A,   _,  _,   _,   R,    "",
+       {{"upper_case", "\"Lift\"", R, kSame}, {"flat", "\"flat\"", A, kSame}, {"bump", "\"bump\"", A, kSame},
+        {"wrap_without_its_keys", "\"wrap\"", R, "initial.axis_m"}}},
+      {"initial.height_m",               T::number,    lift, R,   A,  R,   B,   _,    "initial", {}},
+      {"initial.shape",                  T::only_extras, wrap, _, _,  _,   _,   _,    "",
+       {{"lift_without_height", "\"lift\"", R, "initial.height_m"}}},
+      {"initial.axis_m",                 T::vec2,      wrap, R,   A,  A,   B,   _,    "initial", {}},
+      {"initial.radius_m",               T::number,    wrap, R,   R,  R,   B,   _,    "initial", {}},
+      {"initial.facing_deg",             T::number,    wrap, R,   A,  A,   R,   _,    "",
+       {{"full_turn", "-360.0", A, kSame}, {"beyond_a_turn", "361.0", R, kSame}}},
+      {"initial.span_deg",               T::number,    wrap, R,   R,  R,   R,   _,    "",
+       {{"full_circle", "360.0", R, kSame}, {"almost_a_circle", "359.0", A, kSame}}},
+      {"solver",                         T::table,     lift, A,   _,  _,   _,   _,    "", {}},
+      {"solver.name",                    T::choice,    lift, A,   _,  _,   _,   R,    "",
+       {{"simplex", "\"simplex\"", R, kSame}, {"upper_case", "\"Newton\"", R, kSame},
+        {"dynamic", "\"dynamic\"", A, kSame}, {"newton", "\"newton\"", A, kSame}}},
+      // A loose e is the user's to choose: the run stops at iteration 0 and says so.
+      {"solver.tolerance_N",             T::number,    lift, A,   R,  R,   A,   _,    "", {}},
+      {"solver.max_iterations",          T::integer,   lift, A,   R,  A,   R,   _,    "",
+       {{"cap", "1_000_000_000", A, kSame}, {"beyond_cap", "1_000_000_001", R, kSame}}},
+      {"solver.C",                       T::number,    lift, A,   R,  R,   R,   _,    "",
+       {{"one", "1.0", R, kSame}, {"too_close_to_one", "1.0000001", R, kSame}, {"cap", "1e6", A, kSame}}},
+      {"solver.regularization",          T::number,    lift, A,   R,  R,   R,   _,    "", {{"one", "1.0", A, kSame}}},
+      {"solver.armijo",                  T::number,    lift, A,   R,  R,   R,   _,    "", {{"half", "0.5", R, kSame}}},
+      {"solver.max_backtracks",          T::integer,   lift, A,   R,  R,   R,   _,    "",
+       {{"cap", "200", A, kSame}, {"beyond_cap", "201", R, kSame}}},
+      // Inertia only: the rest and the iteration count do not depend on the density.
+      {"solver.areal_density_kg_m2",     T::number,    lift, A,   R,  R,   A,   _,    "", {}},
+      {"solver.damping",                 T::number,    lift, A,   R,  A,   R,   _,    "", {{"one", "1.0", R, kSame}}},
+      {"solver.time_step_fraction",      T::number,    lift, A,   R,  R,   R,   _,    "", {{"one", "1.0", A, kSame}}},
+      {"solver.stretch_limit",           T::number,    lift, A,   R,  A,   R,   _,    "", {{"cap", "100.0", A, kSame}}},
+      {"solver.threads",                 T::integer,   lift, A,   R,  R,   R,   _,    "",
+       {{"cap", "1024", A, kSame}, {"beyond_cap", "1025", R, kSame}}},
+      {"output",                         T::table,     lift, A,   _,  _,   _,   _,    "", {}},
+      {"output.dir",                     T::text,      lift, A,   _,  _,   _,   R,    "",
+       {{"newline", "\"a\\nb\"", R, kSame}}},
+      {"output.checkpoint_every_iterations", T::integer, lift, A, R,  A,   R,   _,    "", {}},
+      {"output.checkpoint_every_minutes",    T::number,  lift, A, R,  A,   R,   _,    "", {}},
+  };
+  return rows;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Cases generated from the table
+
+enum class Edit {
+  replace,     // the key's value becomes `value`
+  remove,      // the key (or the whole section) is left out
+  header,      // the section's header becomes `value` ("[[fabric]]")
+  root_value,  // the section is replaced by `KEY = value` before the first header
+  insert,      // `value` is added as a line of the section (an unknown key)
+};
+
+struct Case {
+  std::string name;
+  Base base;
+  std::string key;
+  Edit edit;
+  std::string value;
+  Verdict verdict;
+  std::string names;  // the key the message must name (R, B)
+};
+
+std::ostream& operator<<(std::ostream& out, const Case& c) { return out << c.name; }
+
+// A value with one element replaced, for the vector types: [v, 0.01] or [v, 0.01, 0.01].
+std::string vec_with(Type type, const std::string& first) {
+  return "[" + first + (type == Type::vec3 ? ", 0.01, 0.01]" : ", 0.01]");
+}
+
+std::string vec_of(Type type, const std::string& each) {
+  return "[" + each + ", " + each + (type == Type::vec3 ? ", " + each + "]" : "]");
+}
+
+// Wrong types, NaN, infinities and numbers TOML cannot hold: refused for every key of the type.
+std::vector<std::pair<std::string, std::string>> always_refused(Type type) {
+  switch (type) {
+    case Type::number:
+      return {{"string", "\"fast\""}, {"bool", "true"}, {"array", "[1.0]"}, {"table", "{ value = 1.0 }"},
+              {"date", "1980-01-01"}, {"nan", "nan"}, {"inf", "inf"}, {"minus_inf", "-inf"},
+              {"beyond_double", "1e999"}};
+    case Type::integer:
+      return {{"string", "\"many\""}, {"float", "1.5"}, {"integral_float", "2.0"}, {"bool", "true"},
+              {"array", "[1]"}, {"table", "{ value = 1 }"}, {"nan", "nan"}, {"inf", "inf"},
+              {"huge_float", "1e300"}, {"beyond_int64", "99999999999999999999"}};
+    case Type::text:
+    case Type::choice:
+      return {{"number", "3"}, {"bool", "true"}, {"array", "[\"a\"]"}, {"table", "{ value = \"a\" }"}};
+    case Type::vec2:
+    case Type::vec3:
+      return {{"string", "\"0.1\""}, {"number", "0.1"}, {"too_short", type == Type::vec3 ? "[0.01, 0.01]" : "[0.01]"},
+              {"too_long", type == Type::vec3 ? "[0.01, 0.01, 0.01, 0.01]" : "[0.01, 0.01, 0.01]"},
+              {"string_element", vec_with(type, "\"a\"")}, {"bool_element", vec_with(type, "true")},
+              {"nested", vec_with(type, "[0.01]")}, {"table", "{ x = 0.01 }"}, {"nan", vec_with(type, "nan")},
+              {"inf", vec_with(type, "inf")}, {"beyond_double", vec_with(type, "1e999")}};
+    case Type::int_pair:
+      return {{"string", "\"4, 4\""}, {"number", "4"}, {"too_short", "[4]"}, {"too_long", "[4, 4, 4]"},
+              {"float_element", "[2.0, 2]"}, {"string_element", "[\"2\", 2]"}, {"table", "{ i = 2, j = 2 }"},
+              {"nan", "[nan, 2]"}, {"beyond_int64", "[99999999999999999999, 2]"}};
+    case Type::box:
+      return {{"number", "0.1"}, {"string", "\"box\""}, {"flat", "[0.0, 0.0]"}, {"one_corner", "[[0.0, 0.0]]"},
+              {"three_corners", "[[0.0, 0.0], [0.01, 0.01], [0.03, 0.03]]"},
+              {"corner_too_long", "[[0.0, 0.0, 0.0], [0.03, 0.03]]"}, {"table", "{ min = [0.0, 0.0] }"},
+              {"nan", "[[nan, 0.0], [0.03, 0.03]]"}, {"inf", "[[0.0, 0.0], [inf, 0.03]]"},
+              {"beyond_double", "[[0.0, 0.0], [1e999, 0.03]]"}};
+    default:
+      return {};
+  }
+}
+
+// The values of the verdict columns, per type ("" when the column does not apply to it).
+std::string column_value(Type type, const std::string& column) {
+  const bool vector = type == Type::vec2 || type == Type::vec3;
+  if (column == "negative") {
+    if (type == Type::number) return "-1.0";
+    if (type == Type::integer) return "-1";
+    if (vector) return vec_of(type, "-0.01");
+    if (type == Type::int_pair) return "[-1, 2]";
+    if (type == Type::box) return "[[-0.01, -0.01], [0.03, 0.03]]";
+  } else if (column == "zero") {
+    if (type == Type::number) return "0.0";
+    if (type == Type::integer) return "0";
+    if (vector) return vec_of(type, "0.0");
+    if (type == Type::int_pair) return "[0, 0]";
+    if (type == Type::box) return "[[0.0, 0.0], [0.0, 0.0]]";
+  } else if (column == "huge") {
+    if (type == Type::number) return "1e300";
+    if (type == Type::integer) return "99999999999";
+    if (vector) return vec_of(type, "1e300");
+    if (type == Type::int_pair) return "[99999999999, 2]";
+    if (type == Type::box) return "[[0.0, 0.0], [1e300, 1e300]]";
+  } else if (column == "empty") {
+    if (type == Type::text || type == Type::choice) return "\"\"";
+  }
+  return "";
+}
+
+std::string test_name(const KeyRow& row, const std::string& label) {
+  std::string name = std::string(row.base == Base::wrap ? "wrap_" : "") + row.key + "__" + label;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
+
+void add_section_cases(const KeyRow& row, std::vector<Case>* cases) {
+  const std::string key = row.key;
+  const auto add = [&](const std::string& label, Edit edit, const std::string& value, const std::string& names) {
+    cases->push_back({test_name(row, label), row.base, key, edit, value, R, names});
+  };
+  const std::string first = row.type == Type::table_array ? key + ".0" : key;
+  add("number", Edit::root_value, "3", key);
+  add("string", Edit::root_value, "\"" + key + "\"", key);
+  add("unknown_key", Edit::insert, "colour = \"red\"", first + ".colour");
+  if (row.type == Type::table) add("array_of_tables", Edit::header, "[[" + key + "]]", key);
+  if (row.type == Type::table_array) add("array_of_numbers", Edit::root_value, "[3]", key);
+  if (key == "body") add("single_table", Edit::header, "[body]", key);  // one element: a plain table
+}
+
+void add_value_cases(const KeyRow& row, std::vector<Case>* cases) {
+  const auto add = [&](const std::string& label, const std::string& value, Verdict verdict, const std::string& names) {
+    const std::string named = !names.empty() ? names
+                              : verdict == B && *row.builder_names ? row.builder_names
+                                                                   : row.key;
+    cases->push_back({test_name(row, label), row.base, row.key, Edit::replace, value, verdict, named});
+  };
+  for (const auto& [label, value] : always_refused(row.type)) add(label, value, R, "");
+  if (row.type == Type::choice) add("unknown", "\"bogus\"", R, "");
+  const std::pair<const char*, Verdict> columns[] = {
+      {"negative", row.negative}, {"zero", row.zero}, {"huge", row.huge}, {"empty", row.empty}};
+  for (const auto& [column, verdict] : columns) {
+    if (verdict == _) continue;
+    const std::string value = column_value(row.type, column);
+    if (value.empty()) throw std::logic_error(std::string(row.key) + ": no " + column + " value for its type");
+    add(column, value, verdict, "");
+  }
+}
+
+std::vector<Case> all_cases() {
+  std::vector<Case> cases;
+  for (const KeyRow& row : key_table()) {
+    const bool section = row.type == Type::table || row.type == Type::table_array;
+    if (section) add_section_cases(row, &cases);
+    else add_value_cases(row, &cases);
+    if (row.missing != _)
+      cases.push_back({test_name(row, "missing"), row.base, row.key, Edit::remove, "", row.missing, row.key});
+    for (const Extra& e : row.extras) {
+      const std::string names = *e.names ? e.names : e.verdict == B && *row.builder_names ? row.builder_names : row.key;
+      cases.push_back({test_name(row, e.label), row.base, row.key, e.value ? Edit::replace : Edit::remove,
+                       e.value ? e.value : "", e.verdict, names});
+    }
+  }
+  return cases;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Applying a case to the base scene
+
+// A section's name is KEY or, in an array, KEY.N.
+bool is_section_of(const std::string& section, const std::string& key) {
+  if (section == key) return true;
+  if (section.rfind(key + ".", 0) != 0) return false;
+  const std::string rest = section.substr(key.size() + 1);
+  return !rest.empty() && rest.find_first_not_of("0123456789") == std::string::npos;
+}
+
+bool names_a_section(const SceneText& scene, const std::string& key) {
+  for (const auto& s : scene.sections)
+    if (is_section_of(s.name, key)) return true;
+  return false;
+}
+
+void edit_section(SceneText* scene, const Case& c) {
+  auto& sections = scene->sections;
+  if (c.edit == Edit::insert) {
+    for (auto& s : sections)
+      if (s.name == c.key || s.name == c.key + ".0") {
+        const auto equals = c.value.find(" = ");
+        s.entries.push_back({c.value.substr(0, equals), c.value.substr(equals + 3)});
+        return;
+      }
+  }
+  if (c.edit == Edit::header) {
+    for (auto& s : sections)
+      if (is_section_of(s.name, c.key)) s.header = c.value;
+    return;
+  }
+  sections.erase(std::remove_if(sections.begin(), sections.end(),
+                                [&](const Section& s) { return is_section_of(s.name, c.key); }),
+                 sections.end());
+  if (c.edit == Edit::root_value) scene->root.push_back({c.key, c.value});
+}
+
+void edit_entry(SceneText* scene, const Case& c) {
+  const std::string section = c.key.substr(0, c.key.rfind('.'));
+  const std::string name = c.key.substr(c.key.rfind('.') + 1);
+  for (auto& s : scene->sections) {
+    if (s.name != section) continue;
+    for (auto e = s.entries.begin(); e != s.entries.end(); ++e) {
+      if (e->key != name) continue;
+      if (c.edit == Edit::remove) s.entries.erase(e);
+      else e->value = c.value;
+      return;
+    }
+  }
+  throw std::logic_error(c.key + " is not in the base scene");
+}
+
+Rendered scene_of(const Case& c) {
+  SceneText scene = base_scene(c.base);
+  if (names_a_section(scene, c.key)) edit_section(&scene, c);
+  else edit_entry(&scene, c);
+  return render(scene);
+}
+
+// The line an error about `key` must give: the key's own, else its section's header; 0 when
+// neither is in the file (a missing section).
+int expected_line(const Rendered& scene, const std::string& key) {
+  for (std::string k = key; !k.empty(); k = k.rfind('.') == std::string::npos ? "" : k.substr(0, k.rfind('.'))) {
+    const auto found = scene.line_of.find(k);
+    if (found != scene.line_of.end()) return found->second;
+  }
+  return 0;
+}
+
+std::optional<InputError> parse_error(const std::string& text, Scene* scene) {
+  try {
+    *scene = parse_scene(text, scene_path());
+  } catch (const InputError& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
+std::optional<InputError> build_error(const Scene& scene) {
+  try {
+    build_model(scene);
+  } catch (const InputError& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
+// The message is one line, names the key, and gives the file and line when the key (or its
+// section) is in the file.
+void expect_names(const InputError& e, const std::string& key, int line) {
+  const std::string what = e.what();
+  EXPECT_EQ(e.where().key, key) << what;
+  EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  if (line > 0) {
+    EXPECT_EQ(e.where().line, line) << what;
+    const std::string prefix = scene_path() + ":" + std::to_string(line) + ": " + key + ": ";
+    EXPECT_EQ(what.rfind(prefix, 0), 0u) << what << "\ndoes not start with " << prefix;
+  } else {
+    EXPECT_NE(what.find(key + ": "), std::string::npos) << what;
+  }
+}
+
+class SceneBadValue : public ::testing::TestWithParam<Case> {};
+
+TEST_P(SceneBadValue, IsRefusedNamingItsKeyOrAcceptedWhereLegitimate) {
+  const Case& c = GetParam();
+  const Rendered text = scene_of(c);
+  SCOPED_TRACE("scene:\n" + text.text);
+  Scene scene;
+  const std::optional<InputError> error = parse_error(text.text, &scene);
+  if (c.verdict == R) {
+    ASSERT_TRUE(error.has_value()) << c.key << " = " << c.value << " was accepted";
+    expect_names(*error, c.names, expected_line(text, c.names));
+    return;
+  }
+  ASSERT_FALSE(error.has_value()) << error->what();
+  if (c.verdict == B) {
+    const std::optional<InputError> built = build_error(scene);
+    ASSERT_TRUE(built.has_value()) << c.key << " = " << c.value << " was accepted by build_model";
+    expect_names(*built, c.names, expected_line(text, c.names));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryKey, SceneBadValue, ::testing::ValuesIn(all_cases()),
+                         [](const auto& case_info) { return case_info.param.name; });
+
+// ---------------------------------------------------------------------------------------------
+// The table itself
+
+// The base scenes are valid through to a model: every failure above is the edited key's.
+TEST(SceneBadValueTable, BaseScenesBuildAModel) {
+  for (const Base base : {Base::lift, Base::wrap}) {
+    const std::string text = render(base_scene(base)).text;
+    const Scene scene = parse_scene(text, scene_path());
+    EXPECT_NO_THROW(build_model(scene)) << text;
+  }
+}
+
+// The keys a section knows, as the parser lists them when it meets an unknown one.
+std::set<std::string> known_keys(SceneText scene, const std::string& section) {
+  if (section.empty()) scene.root.push_back({"colour", "\"red\""});
+  for (auto& s : scene.sections)
+    if (s.name == section) s.entries.push_back({"colour", "\"red\""});
+  Scene unused;
+  const auto error = parse_error(render(scene).text, &unused);
+  std::set<std::string> keys;
+  if (!error) return keys;
+  const std::string what = error->what();
+  const auto from = what.find("known here: ");
+  if (from == std::string::npos) return keys;
+  std::stringstream list(what.substr(from + 12, what.rfind(')') - from - 12));
+  for (std::string k; std::getline(list, k, ',');) keys.insert(k.substr(k.find_first_not_of(' ')));
+  return keys;
+}
+
+// A row key with its array indices dropped: "constraint.1.node" -> "constraint.node".
+std::string family_of(const std::string& key) {
+  std::string out;
+  std::stringstream parts(key);
+  for (std::string p; std::getline(parts, p, '.');)
+    if (p.find_first_not_of("0123456789") != std::string::npos) out += (out.empty() ? "" : ".") + p;
+  return out;
+}
+
+// Every key the parser knows has a row: a key added to scene_toml.cpp without one fails here.
+TEST(SceneBadValueTable, ListsEveryKeyTheParserKnows) {
+  std::set<std::string> rows;
+  for (const KeyRow& row : key_table()) rows.insert(family_of(row.key));
+  const std::pair<Base, const char*> sections[] = {
+      {Base::lift, ""},          {Base::lift, "scene"},  {Base::lift, "fabric"}, {Base::lift, "body.0"},
+      {Base::lift, "constraint.0"}, {Base::lift, "initial"}, {Base::lift, "solver"}, {Base::lift, "output"},
+      {Base::wrap, "initial"}};
+  for (const auto& [base, section] : sections) {
+    const std::set<std::string> known = known_keys(base_scene(base), section);
+    EXPECT_FALSE(known.empty()) << "no list of known keys for section '" << section << "'";
+    const std::string family = family_of(section);
+    for (const auto& k : known)
+      EXPECT_TRUE(rows.count(family.empty() ? k : family + "." + k)) << "no row for " << family << "." << k;
+  }
+}
+
+}  // namespace
+}  // namespace fabform
