@@ -90,16 +90,27 @@ int exit_status(Termination termination) {
   }
 }
 
+// What matters for contact in the bodies themselves (an open mold is fine; inverted normals are
+// not): found once, as CGAL's checks of a large mesh take a while.
+std::vector<std::string> body_warnings(const Model& model) {
+  std::vector<std::string> warnings;
+  for (const RigidBody& body : model.bodies)
+    for (const auto& w : inspect_mesh(body.mesh()).contact_warnings()) warnings.push_back("body '" + body.name() + "': " + w);
+  return warnings;
+}
+
+// The warnings of a state: strains beyond the tables or folded flat, nodes inside a body, and
+// the bodies' own.
 std::vector<std::string> collect_warnings(const Model& model, const SolverState& state,
-                                          const EquilibriumReport& check, double tolerance_m) {
+                                          const EquilibriumReport& check, double tolerance_m,
+                                          const std::vector<std::string>& of_bodies) {
   std::vector<std::string> warnings = table_range_warnings(model, state.x);
   if (check.max_penetration_m > tolerance_m) {
     char text[160];
     std::snprintf(text, sizeof text, "a node lies %.3g m inside a body", check.max_penetration_m);
     warnings.emplace_back(text);
   }
-  for (const RigidBody& body : model.bodies)  // an open mold is fine; inverted normals are not
-    for (const auto& w : inspect_mesh(body.mesh()).contact_warnings()) warnings.push_back("body '" + body.name() + "': " + w);
+  warnings.insert(warnings.end(), of_bodies.begin(), of_bodies.end());
   return warnings;
 }
 
@@ -156,11 +167,12 @@ int run(const RunArguments& args) {
                scene.name.c_str(), model.node_count(), model.bodies.size(),
                scene.solver.name.c_str(), scene.solver.tolerance_N(),
                start.recorded ? (", resumed after iteration " + std::to_string(so_far.iterations)).c_str() : "");
+  const std::vector<std::string> of_bodies = body_warnings(model);
   const auto publish = [&](const SolverState& s, const Summary& summary) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     write_results(dir, RunRecord{scene, model, s, summary, check, inputs,
-                                 collect_warnings(model, s, check, 1e-6), wall, scene.solver.threads});
+                                 collect_warnings(model, s, check, 1e-6, of_bodies), wall, scene.solver.threads});
   };
   Progress progress(stderr);
   RunMonitor monitor(state, so_far, scene.checkpoint, publish, args.quiet ? nullptr : &progress);
