@@ -16,6 +16,7 @@
 #include "io/binary_stl.hpp"
 #include "io/mesh_file_check.hpp"
 #include "io/vrml_reader.hpp"
+#include "io/x3d_translation.hpp"
 
 namespace fabform {
 namespace {
@@ -191,6 +192,24 @@ TriangleMesh read_with_assimp(const std::string& path, const std::optional<std::
   return mesh;
 }
 
+// X3D XML through its VRML97 translation; what was left out is said, as the VRML reader says
+// what it skips.
+TriangleMesh read_x3d(const std::string& path, std::vector<std::string>* warnings) {
+  const X3dTranslation translation = translate_x3d(path);
+  std::string left_out;
+  for (const auto& [name, count] : translation.left_out)
+    left_out += (left_out.empty() ? "" : ", ") + name + (count > 1 ? " x" + std::to_string(count) : "");
+  if (!left_out.empty()) left_out = "X3D: left out what shapes no surface: " + left_out;
+  try {
+    TriangleMesh mesh = read_vrml_text(translation.vrml, path, warnings);
+    if (warnings && !left_out.empty()) warnings->push_back(left_out);
+    return mesh;
+  } catch (const InputError& error) {  // "no triangles" says more with what was left out
+    if (left_out.empty()) throw;
+    throw InputError(error.where(), error.message() + "; " + left_out);
+  }
+}
+
 }  // namespace
 
 TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnings) {
@@ -200,16 +219,15 @@ TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnin
   // assimp 5.2.5 has no VRML97 reader; Coin3D reads it (.wrz is gzip-compressed VRML97).
   const std::string extension = lower_extension(path);
   if (extension == ".wrl" || extension == ".wrz" || extension == ".vrml") return read_vrml(path, warnings);
-  // X3D goes to neither reader, because neither reads it right (checked on tests/data/vrml/x3d,
-  // counts by hand in tests/data/vrml/README.md). Coin 4.0 reads no X3D at all, XML or classic
-  // ("Not a valid Inventor file"). assimp 5.2.5 reads X3D XML but loses DEF/USE instances
-  // (ComputerKeyboard.x3d: 100 of its 2020 triangles) and turns an IndexedLineSet into faces
-  // (IndexedLineSet.x3d: 3 triangles from a line loop), and has no classic (.x3dv) reader.
-  if (extension == ".x3d" || extension == ".x3dv" || extension == ".x3db" || extension == ".x3dz" ||
-      extension == ".x3dvz")
+  // X3D goes to neither reader as it is: Coin 4.0 reads no X3D ("Not a valid Inventor file"),
+  // and assimp 5.2.5 loses DEF/USE instances (ComputerKeyboard.x3d: 100 of its 2020
+  // triangles) and turns an IndexedLineSet into faces. X3D's XML encoding is translated to the
+  // VRML97 it extends and read by Coin; the classic and binary encodings are refused.
+  if (extension == ".x3d") return read_x3d(path, warnings);
+  if (extension == ".x3dv" || extension == ".x3db" || extension == ".x3dz" || extension == ".x3dvz")
     throw InputError({path, 0, ""},
-                     "X3D is not read (neither assimp 5.2.5 nor Coin 4.0 reads it correctly): export the "
-                     "body as VRML97 (.wrl), STL or OBJ");
+                     "X3D's classic and binary encodings are not read (X3D XML, .x3d, is): export the body "
+                     "as .x3d, VRML97 (.wrl), STL or OBJ");
   const std::optional<std::string> mended = check_mesh_file(path);
   if (extension == ".stl" && is_binary_stl(path)) return with_triangles(read_binary_stl(path), path, {});
   return read_with_assimp(path, mended, warnings);

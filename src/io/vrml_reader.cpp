@@ -391,6 +391,18 @@ struct SceneReader {
 
     SoInput input;  // closes the file when it goes out of scope
     if (!input.openFile(path.c_str())) throw failure(path, "cannot open the file");
+    return parse(input, path, text_after_header(path));
+  }
+
+  // Reads VRML97 text that stands for the file `path` (a translation of it).
+  NodeRef read_text(const std::string& text, const std::string& path) {
+    SoInput input;
+    input.setBuffer(text.data(), text.size());
+    return parse(input, path, text.substr(std::min(text.size(), text.find('\n') + 1)));
+  }
+
+  NodeRef parse(SoInput& input, const std::string& path, const std::string& body) {
+    std::error_code ec;
     // Coin reads the header itself (through gzip when the file is compressed).
     const std::string header = input.getHeader().getString();
     if (!input.isValidFile() || !input.isFileVRML2()) {
@@ -398,7 +410,7 @@ struct SceneReader {
       throw InputError({path, 1, ""},
                        "not a VRML97 file: the first line must be '#VRML V2.0 utf8' (found " + seen + ")");
     }
-    const auto [cycle, cycle_line] = find_use_inside_own_def(text_after_header(path));
+    const auto [cycle, cycle_line] = find_use_inside_own_def(body);
     if (!cycle.empty())
       throw InputError({path, cycle_line, ""}, "USE " + cycle + " inside the definition of " + cycle +
                                                    " (a node cannot contain itself)");
@@ -614,13 +626,10 @@ void add_warnings(const Traversal& t, const CoinMessages& messages, std::vector<
 
 }  // namespace
 
-TriangleMesh read_vrml(const std::string& path, std::vector<std::string>* warnings) {
-  const std::lock_guard<std::mutex> guard(coin_lock());
-  CoinMessages messages;
-  const ScopedCoinHandlers handlers(&messages);
-  SceneReader reader{&messages, {}, {}};
-  const NodeRef root(reader.read(path));
-  std::vector<std::string>& image_warnings = reader.image_warnings;
+// The triangles of a scene read from `path`, with the warnings of reading and traversing it.
+TriangleMesh triangles_of(const NodeRef& root, const std::string& path, const SceneReader& reader,
+                          const CoinMessages& messages, std::vector<std::string>* warnings) {
+  const std::vector<std::string>& image_warnings = reader.image_warnings;
 
   prepare(root.get());
   Traversal traversal;
@@ -646,6 +655,24 @@ TriangleMesh read_vrml(const std::string& path, std::vector<std::string>* warnin
     warnings->insert(warnings->end(), image_warnings.begin(), image_warnings.end());
   }
   return std::move(traversal.mesh);
+}
+
+TriangleMesh read_vrml(const std::string& path, std::vector<std::string>* warnings) {
+  const std::lock_guard<std::mutex> guard(coin_lock());
+  CoinMessages messages;
+  const ScopedCoinHandlers handlers(&messages);
+  SceneReader reader{&messages, {}, {}};
+  const NodeRef root(reader.read(path));
+  return triangles_of(root, path, reader, messages, warnings);
+}
+
+TriangleMesh read_vrml_text(const std::string& text, const std::string& path, std::vector<std::string>* warnings) {
+  const std::lock_guard<std::mutex> guard(coin_lock());
+  CoinMessages messages;
+  const ScopedCoinHandlers handlers(&messages);
+  SceneReader reader{&messages, {}, {}};
+  const NodeRef root(reader.read_text(text, path));
+  return triangles_of(root, path, reader, messages, warnings);
 }
 
 }  // namespace fabform

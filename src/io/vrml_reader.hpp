@@ -27,4 +27,8 @@ namespace fabform {
 /// Thread-safe (reads are serialised: Coin's scene database is global).
 TriangleMesh read_vrml(const std::string& path, std::vector<std::string>* warnings);
 
+/// The same for VRML97 text standing for the file `path` (a translation of it, as X3D's):
+/// errors name `path`; Inlines resolve against its folder.
+TriangleMesh read_vrml_text(const std::string& text, const std::string& path, std::vector<std::string>* warnings);
+
 }  // namespace fabform

@@ -525,18 +525,15 @@ TEST_F(VrmlFiles, ReadMeshSendsVrmlToCoin) {
   expect_box(box, {-1, -1, -1}, {1, 1, 1}, 0.0);
 }
 
-// Neither reader gets X3D right (see read_mesh and tests/data/vrml/README.md): refused.
-TEST(VrmlReader, X3dIsRefused) {
-  for (const char* name : {"x3d/assimp_ComputerKeyboard.x3d", "x3d/assimp_HelloWorld.x3d", "x3d/assimp_HelloWorld.x3dv",
-                           "x3d/assimp_IndexedLineSet.x3d"}) {
-    const std::string path = data_file(name);
-    try {
-      read_mesh(path);
-      ADD_FAILURE() << "no InputError for " << name;
-    } catch (const InputError& error) {
-      EXPECT_EQ(error.where().file, path);
-      EXPECT_NE(error.message().find("X3D"), std::string::npos) << error.what();
-    }
+// X3D XML is translated (tests/io/x3d_translation_test.cpp); its other encodings are refused.
+TEST(VrmlReader, X3dClassicEncodingIsRefused) {
+  const std::string path = data_file("x3d/assimp_HelloWorld.x3dv");
+  try {
+    read_mesh(path);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where().file, path);
+    EXPECT_NE(error.message().find("X3D's classic and binary encodings are not read"), std::string::npos) << error.what();
   }
 }
 
