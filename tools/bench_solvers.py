@@ -257,8 +257,9 @@ def run_once(case, solver, tolerance, threads, out, budget) -> tuple:
     """Run fabform once: (its row, its node positions or None)."""
     if out.exists():
         shutil.rmtree(out)
-    out.mkdir(parents=True)
-    log = out / "stderr.txt"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    # Beside the results folder, not in it: fabform refuses a folder holding files it did not write.
+    log = out.parent / f"{out.name}.stderr.txt"
     code, peak, wall = wait_within(launch(command_for(case, solver, tolerance, threads, out), log), budget)
     row = {"solver": solver, "tolerance_N": tolerance, "threads": threads,
            "peak_MiB": round(peak, 1), "seconds": round(wall, 3), "exit_code": "" if code is None else code}

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bounded fuzzing of the scene and material parsers (libFuzzer, AddressSanitizer, UBSan).
+# Bounded fuzzing of the scene, material and X3D parsers (libFuzzer, AddressSanitizer, UBSan).
 #   tools/fuzz.sh build               configure and build the targets in build-fuzz/ (clang)
 #   tools/fuzz.sh run TARGET SECONDS  replay TARGET's regression inputs, then fuzz for SECONDS
 # Inputs that crashed once are kept in tests/fuzz/regressions/TARGET/ and replayed every run.
@@ -10,7 +10,7 @@ case "${1:-}" in
   build)
     CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFABFORM_FUZZ=ON \
       -DBUILD_TESTING=OFF >/dev/null
-    cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene fuzz_material >/dev/null
+    cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene fuzz_material fuzz_x3d >/dev/null
     ;;
   run)
     target=$2 seconds=$3

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cstdlib>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -228,16 +229,23 @@ class Translator {
 
 }  // namespace
 
-X3dTranslation translate_x3d(const std::string& path) {
+X3dTranslation translate_x3d_text(const std::string& text, const std::string& path) {
   tinyxml2::XMLDocument document;
-  if (document.LoadFile(path.c_str()) != tinyxml2::XML_SUCCESS) {
-    const int line = document.ErrorLineNum();
-    std::string why = document.ErrorStr() ? document.ErrorStr() : "unreadable";
-    throw InputError({path, line, ""}, "not well-formed XML: " + why.substr(0, 160));
+  if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+    const std::string why = document.ErrorStr() ? document.ErrorStr() : "unreadable";
+    throw InputError({path, document.ErrorLineNum(), ""}, "not well-formed XML: " + why.substr(0, 160));
   }
   const XMLElement* root = document.RootElement();
   if (!root) throw InputError({path, 0, ""}, "empty XML document");
   return Translator(path).run(*root);
+}
+
+X3dTranslation translate_x3d(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, ""}, "cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return translate_x3d_text(text.str(), path);
 }
 
 }  // namespace fabform

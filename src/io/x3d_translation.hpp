@@ -20,4 +20,7 @@ struct X3dTranslation {
 /// or a geometry field holds something other than numbers (or, for booleans, true or false).
 X3dTranslation translate_x3d(const std::string& path);
 
+/// The same for the file's text (`path` names it in errors).
+X3dTranslation translate_x3d_text(const std::string& text, const std::string& path);
+
 }  // namespace fabform
