@@ -79,8 +79,9 @@ def git_blob_sha1(data):
     return hashlib.sha1(b"blob %d\0" % len(data) + data).hexdigest()
 
 
-def load_stretching(source_dir, fabric):
-    """Return the 6x4 stretching table of `fabric`, after checking its blob id."""
+def load_source(source_dir, fabric):
+    """Return the 6x4 stretching table of `fabric` and its areal density (kg/m^2), after
+    checking the file's blob id."""
     path = Path(source_dir) / (fabric + ".json")
     data = path.read_bytes()
     expected = FABRICS[fabric][0]
@@ -88,10 +89,13 @@ def load_stretching(source_dir, fabric):
     if actual != expected:
         raise SystemExit("%s: git blob sha1 %s, expected %s (see SOURCES.md)"
                          % (path, actual, expected))
-    table = json.loads(data.decode("utf-8"))["stretching"]
+    source = json.loads(data.decode("utf-8"))
+    table, density = source["stretching"], float(source["density"])
     if len(table) != 6 or any(len(row) != 4 for row in table):
         raise SystemExit("%s: stretching is not 6x4" % path)
-    return [[float(x) for x in row] for row in table]
+    if not density > 0:
+        raise SystemExit("%s: density is not positive" % path)
+    return [[float(x) for x in row] for row in table], density
 
 
 def used_stiffness(stretching, direction):
@@ -135,7 +139,7 @@ def header_lines(fabric, direction, k_small, k_large):
     sha, desc = FABRICS[fabric]
     col, row, angle = DIRECTIONS[direction]
     return [
-        "# fabform material table, version 1 (format: materials/README.md)",
+        "# fabform material table, version 2 (format: materials/README.md)",
         "# fabric: %s (%s)" % (fabric, desc),
         "# direction: %s (ARCSim material %s axis)"
         % (direction, "u" if direction == "warp" else "v"),
@@ -155,10 +159,12 @@ def header_lines(fabric, direction, k_small, k_large):
     ]
 
 
-def table_text(fabric, direction, stretching):
+def table_text(fabric, direction, stretching, density):
     """Complete CSV text for one fabric and direction."""
     k_small, k_large = used_stiffness(stretching, direction)
     lines = header_lines(fabric, direction, k_small, k_large)
+    lines.append("# the source's areal density (its \"density\"), what gravity acts on")
+    lines.append("areal_density_kg_m2,%r" % density)
     lines.append(HEADERS[0])
     for e in SAMPLE_STRAINS:
         lines.append("%s,%s" % (fmt_strain(e), fmt_value(tension(e, k_small, k_large))))
@@ -173,16 +179,16 @@ def generate_all(source_dir):
     """{file name: text} for every fabric and direction."""
     out = {}
     for fabric in FABRICS:
-        stretching = load_stretching(source_dir, fabric)
+        stretching, density = load_source(source_dir, fabric)
         for direction in DIRECTIONS:
-            text = table_text(fabric, direction, stretching)
+            text = table_text(fabric, direction, stretching, density)
             parse_table(text)  # the output must satisfy the format spec
             out[table_name(fabric, direction)] = text
     return out
 
 
 # ---------------------------------------------------------------- reader
-# A reference reader for the format in materials/README.md (version 1).
+# A reference reader for the format in materials/README.md (version 2).
 
 class TableError(ValueError):
     pass
@@ -205,8 +211,8 @@ def split_pair(line, lineno):
 
 
 def parse_table(text):
-    """Parse a version-1 table; return (kind, thickness_m or None, [(strain, value)])."""
-    thickness, kind, points = None, None, []
+    """Parse a version-2 table; return (kind, thickness_m or None, [(strain, value)])."""
+    thickness, density, kind, points = None, None, None, []
     for lineno, raw in enumerate(text.split("\n"), start=1):
         line = raw[:-1] if raw.endswith("\r") else raw
         line = line.strip(" \t")
@@ -216,6 +222,13 @@ def parse_table(text):
             kind = line.split(",")[1]
             continue
         a, b = split_pair(line, lineno)
+        if kind is None and a == "areal_density_kg_m2":
+            if density is not None:
+                raise TableError("line %d: duplicate areal_density_kg_m2" % lineno)
+            density = parse_number(b, lineno)
+            if density <= 0:
+                raise TableError("line %d: areal_density_kg_m2 must be > 0" % lineno)
+            continue
         if kind is None:
             if a != "thickness_m":
                 raise TableError("line %d: unknown directive %r" % (lineno, a))
@@ -313,7 +326,7 @@ def summary(source_dir, out_dir):
              "|---|" + "---:|" * (len(SUMMARY_STRAINS) + 3)]
     notes = []
     for fabric in FABRICS:
-        stretching = load_stretching(source_dir, fabric)
+        stretching, _ = load_source(source_dir, fabric)
         for direction in DIRECTIONS:
             name = table_name(fabric, direction)
             _, _, points = parse_table((Path(out_dir) / name).read_text(encoding="ascii"))

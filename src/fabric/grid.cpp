@@ -55,6 +55,16 @@ bool FabricGrid::on_perimeter(int node) const {
   return i == 0 || j == 0 || i == n_ - 1 || j == m_ - 1;
 }
 
+std::vector<double> FabricGrid::node_areas() const {
+  std::vector<double> area(static_cast<std::size_t>(node_count()), 0.0);
+  for (const Spring& s : springs_) {
+    const double share = s.width * s.rest_length / 4.0;
+    area[static_cast<std::size_t>(s.a)] += share;
+    area[static_cast<std::size_t>(s.b)] += share;
+  }
+  return area;
+}
+
 Eigen::Vector3d FabricGrid::rest_position(int node) const {
   return {i_of(node) * spacing_warp(), j_of(node) * spacing_weft(), 0.0};
 }

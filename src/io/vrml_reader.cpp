@@ -2,7 +2,6 @@
 
 #include <Inventor/SbLinear.h>
 #include <Inventor/SoDB.h>
-#include <Inventor/SoFullPath.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/VRMLnodes/SoVRMLBox.h>
@@ -20,12 +19,10 @@
 #include <Inventor/VRMLnodes/SoVRMLText.h>
 #include <Inventor/VRMLnodes/SoVRMLTexture.h>
 #include <Inventor/actions/SoCallbackAction.h>
-#include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/errors/SoError.h>
 #include <Inventor/errors/SoMemoryError.h>
 #include <Inventor/errors/SoReadError.h>
-#include <Inventor/lists/SoPathList.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <Eigen/Core>
@@ -186,17 +183,21 @@ std::string vrml_type_name(const SoNode* node) {
 // ---- The scene, prepared --------------------------------------------------------------------
 
 // Every node of type `type` in the scene, hidden Switch choices and nodes held in fields
-// (Shape.geometry) included.
+// (Shape.geometry) included. A callback action reaches the nodes themselves; SoSearchAction's
+// paths would end at the Shape, and their hidden tails are reachable only by casting SoPath to
+// SoFullPath, an object it is not.
 std::vector<SoNode*> find_all(SoNode* root, const SoType& type) {
-  SoSearchAction search;
-  search.setType(type);
-  search.setInterest(SoSearchAction::ALL);
-  search.setSearchingAll(TRUE);
-  search.apply(root);
   std::vector<SoNode*> nodes;
-  const SoPathList& paths = search.getPaths();
-  // A path's public tail stops at the Shape that holds the geometry; the full path goes on.
-  for (int i = 0; i < paths.getLength(); ++i) nodes.push_back(static_cast<SoFullPath*>(paths[i])->getTail());
+  SoCallbackAction visit;
+  visit.setCallbackAll(TRUE);
+  visit.addPreCallback(
+      type,
+      [](void* found, SoCallbackAction*, const SoNode* node) {
+        static_cast<std::vector<SoNode*>*>(found)->push_back(const_cast<SoNode*>(node));
+        return SoCallbackAction::CONTINUE;
+      },
+      &nodes);
+  visit.apply(root);
   return nodes;
 }
 

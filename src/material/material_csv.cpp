@@ -51,7 +51,7 @@ class TableParser {
  public:
   explicit TableParser(std::string source) : source_(std::move(source)) {}
 
-  TensionTable parse(std::istream& in) {
+  MaterialFile parse(std::istream& in) {
     std::string raw;
     while (std::getline(in, raw)) {
       ++line_;
@@ -76,6 +76,13 @@ class TableParser {
   }
 
   void take_before_header(const Cells& cells) {
+    if (cells.first == "areal_density_kg_m2") {
+      if (areal_density_kg_m2_) fail("areal_density_kg_m2 is given twice");
+      const auto value = parse_number(cells.second);
+      if (!value || *value <= 0.0) fail("areal_density_kg_m2 must be a positive number of kg/m²");
+      areal_density_kg_m2_ = value;
+      return;
+    }
     if (cells.first == "thickness_m") {
       if (thickness_m_) fail("thickness_m is given twice");
       const auto value = parse_number(cells.second);
@@ -86,7 +93,7 @@ class TableParser {
     }
     if (cells.first != "strain")
       fail("expected the header 'strain,tension_N_per_m' or 'strain,stress_Pa', or a "
-           "'thickness_m,VALUE' line before it; got '" + cells.first + "," + cells.second + "'");
+           "'thickness_m,VALUE' or 'areal_density_kg_m2,VALUE' line before it; got '" + cells.first + "," + cells.second + "'");
     if (cells.second == "stress_Pa") {
       is_stress_ = true;
     } else if (cells.second != "tension_N_per_m") {
@@ -109,7 +116,7 @@ class TableParser {
     if (points_.size() == 1) first_point_line_ = line_;
   }
 
-  TensionTable finish() {
+  MaterialFile finish() {
     if (!header_seen_) fail("no header line 'strain,tension_N_per_m' or 'strain,stress_Pa'", 0);
     if (is_stress_ && !thickness_m_)
       fail("a stress_Pa table needs a 'thickness_m,VALUE' line before its header", header_line_);
@@ -119,7 +126,7 @@ class TableParser {
     if (is_stress_)
       for (auto& point : points_) point.tension_N_per_m *= *thickness_m_;
     try {
-      return TensionTable(points_, source_);
+      return {TensionTable(points_, source_), areal_density_kg_m2_};
     } catch (const std::invalid_argument& error) {
       fail(error.what(), first_point_line_);
     }
@@ -133,19 +140,26 @@ class TableParser {
   bool header_seen_ = false;
   bool is_stress_ = false;
   std::optional<double> thickness_m_;
+  std::optional<double> areal_density_kg_m2_;
   std::vector<TablePoint> points_;
 };
 
 }  // namespace
 
-TensionTable parse_material_table(std::istream& in, const std::string& source_name) {
+MaterialFile parse_material_file(std::istream& in, const std::string& source_name) {
   return TableParser(source_name).parse(in);
 }
 
-TensionTable read_material_table(const std::string& path) {
+MaterialFile read_material_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, ""}, "cannot open the material table");
-  return parse_material_table(in, path);
+  return parse_material_file(in, path);
 }
+
+TensionTable parse_material_table(std::istream& in, const std::string& source_name) {
+  return parse_material_file(in, source_name).table;
+}
+
+TensionTable read_material_table(const std::string& path) { return read_material_file(path).table; }
 
 }  // namespace fabform

@@ -71,7 +71,7 @@ std::string result_json(const RunRecord& run) {
   j["contact_nodes"] = run.check.contact_nodes;
   j["max_penetration_m"] = number(run.check.max_penetration_m);
   j["figures"] = figures_json(fabric_figures(run.model, run.state.x, run.check.contact));
-  j["modelled"] = {"stretch: warp and weft springs, tension-only piecewise-linear tables"};
+  j["modelled"] = run.model.modelled;
   j["materials"] = {{"warp", run.scene.warp_path}, {"weft", run.scene.weft_path}};
   nlohmann::json bodies = nlohmann::json::array();
   for (const RigidBody& b : run.model.bodies)

@@ -1,5 +1,7 @@
 #include "fabform/scene/model_builder.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -27,9 +29,40 @@ bool within_range(const std::vector<Eigen::Vector3d>& points) {
   return true;
 }
 
-TensionTable read_table(const std::string& path, const SourceLocation& where) {
+MaterialFile read_material(const std::string& path, const SourceLocation& where) {
   require_file(path, where, "material table");
-  return read_material_table(path);
+  return read_material_file(path);
+}
+
+// The fabric's mass per area, as its material files state it: one of them, or both alike.
+double areal_density(const Scene& scene, const MaterialFile& warp, const MaterialFile& weft) {
+  const auto& a = warp.areal_density_kg_m2;
+  const auto& b = weft.areal_density_kg_m2;
+  if (!a && !b)
+    throw InputError(scene.gravity.where,
+                     "gravity needs the fabric's mass per area: neither material file (" +
+                         scene.warp_path + ", " + scene.weft_path +
+                         ") has an 'areal_density_kg_m2,VALUE' line");
+  // The same fabric, written twice: equal up to the rounding of a decimal number.
+  if (a && b && std::abs(*a - *b) > 1e-9 * std::max(*a, *b))
+    throw InputError({scene.weft_path, 0, ""}, "areal_density_kg_m2 " + std::to_string(*b) +
+                                                   " differs from the warp file's " + std::to_string(*a));
+  return a ? *a : *b;
+}
+
+std::string gravity_term(double density_kg_m2, double acceleration_m_s2) {
+  char text[160];
+  std::snprintf(text, sizeof text,
+                "gravity: %.6g m/s² along -z on an areal density of %.6g kg/m² (material files)",
+                acceleration_m_s2, density_kg_m2);
+  return text;
+}
+
+void add_gravity(const Scene& scene, const MaterialFile& warp, const MaterialFile& weft, Model* model) {
+  if (!scene.gravity.on) return;
+  const double density = areal_density(scene, warp, weft);
+  model->loads = gravity_loads(model->grid, density, scene.gravity.acceleration_m_s2);
+  model->modelled.push_back(gravity_term(density, scene.gravity.acceleration_m_s2));
 }
 
 RigidBody build_body(const BodySpec& spec) {
@@ -120,12 +153,12 @@ void check_clear_start(const Scene& scene, const Model& model) {
 
 Model build_model(const Scene& scene) {
   FabricGrid grid = build_grid(scene);
-  Model model{grid,
-              read_table(scene.warp_path, scene.warp_where),
-              read_table(scene.weft_path, scene.weft_where),
-              build_locks(scene, grid),
-              build_bodies(scene),
-              build_start(scene, grid)};
+  const MaterialFile warp = read_material(scene.warp_path, scene.warp_where);
+  const MaterialFile weft = read_material(scene.weft_path, scene.weft_where);
+  Model model{grid,        warp.table,           weft.table, build_locks(scene, grid),
+              build_bodies(scene), build_start(scene, grid), {},
+              {"stretch: warp and weft springs, tension-only piecewise-linear tables"}};
+  add_gravity(scene, warp, weft, &model);
   check_clear_start(scene, model);
   return model;
 }

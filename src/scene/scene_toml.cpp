@@ -248,6 +248,16 @@ void read_solver(TableReader r, Scene* scene) {
                     "stretch_limit", "threads"});
 }
 
+void read_gravity(TableReader r, Scene* scene) {
+  GravitySpec& g = scene->gravity;
+  g.on = true;
+  g.where = r.where();
+  g.acceleration_m_s2 = r.number("acceleration_m_s2", g.acceleration_m_s2);
+  if (!(g.acceleration_m_s2 > 0.0 && g.acceleration_m_s2 <= 1000.0))
+    r.fail("acceleration_m_s2", "must be in (0, 1000] m/s² (9.80665 on Earth)");
+  r.reject_unknown({"acceleration_m_s2"});
+}
+
 void read_output(TableReader r, Scene* scene) {
   const std::string dir = plain_text(r, "dir", "");
   scene->output_dir = resolve(scene->path, dir);
@@ -328,10 +338,11 @@ Scene read_scene(const toml::table& root, const std::string& path,
   const auto bodies = r.tables("body");
   for (std::size_t b = 0; b < bodies.size(); ++b) scene.bodies.push_back(read_body(bodies[b], path, b));
   for (auto& c : r.tables("constraint")) scene.constraints.push_back(read_constraint(c, scene.grid));
+  if (r.has("gravity")) read_gravity(r.table("gravity", false), &scene);
   read_initial(r.table("initial", false), &scene);
   read_solver(r.table("solver", false), &scene);
   read_output(r.table("output", false), &scene);
-  r.reject_unknown({"scene", "fabric", "body", "constraint", "initial", "solver", "output"});
+  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "initial", "solver", "output"});
   return scene;
 }
 

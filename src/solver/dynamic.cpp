@@ -32,12 +32,8 @@ std::string DynamicOptions::invalid_reason(std::string* field) const {
 }
 
 std::vector<double> node_masses(const Model& model, double areal_density_kg_m2) {
-  std::vector<double> mass(static_cast<std::size_t>(model.node_count()), 0.0);
-  for (const Spring& s : model.grid.springs()) {
-    const double share = areal_density_kg_m2 * s.width * s.rest_length / 4.0;
-    mass[static_cast<std::size_t>(s.a)] += share;
-    mass[static_cast<std::size_t>(s.b)] += share;
-  }
+  std::vector<double> mass = model.grid.node_areas();
+  for (double& m : mass) m *= areal_density_kg_m2;
   return mass;
 }
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/potential_energy.hpp"
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/thread_count.hpp"
@@ -68,15 +69,35 @@ class Relaxation {
     const double residual = push.norm();
     if (!(residual > 0.0)) return;
     const Eigen::Vector3d direction = push / residual;
+    if (take_step(k, direction, [&](const NodeMove& candidate) {
+          return node_residual(model_, state_, k, candidate.x, candidate.contact) < residual;
+        }))
+      return;
+    // Seed 003's rule alone can hold a node for ever once its tension-only springs go slack
+    // under a load: wherever it moves within the slack, the force on it is its load, unchanged,
+    // and a step out of the slack overshoots. Then the first step that lowers the node's
+    // energy is taken; without loads this fallback is seldom reached.
+    const double energy = node_energy_at(model_, state_.x, k, state_.x[i]);
+    take_step(k, direction, [&](const NodeMove& candidate) {
+      return node_energy_at(model_, state_.x, k, candidate.x) < energy;
+    });
+  }
+
+  // Steps of ξ, ξ/C, ξ/C², … along `direction` until `accept` takes one; false when none is.
+  template <class Accept>
+  bool take_step(int k, const Eigen::Vector3d& direction, Accept accept) {
+    const auto i = static_cast<std::size_t>(k);
+    NodeContact& contact = state_.contact[i];
     double step = first_step_length(k);
     for (int attempt = 0; attempt < step_attempts_; ++attempt, step /= options_.C) {
       const NodeMove candidate = move_node(model_, k, state_.x[i], direction * step, contact);
-      if (node_residual(model_, state_, k, candidate.x, candidate.contact) < residual) {
+      if (accept(candidate)) {
         state_.x[i] = candidate.x;
         contact = candidate.contact;
-        return;
+        return true;
       }
     }
+    return false;
   }
 
   // ξ = Σ|d_k| / C (Eq. 4). With every spring at rest length ξ would be 0 although a

@@ -144,7 +144,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadFlag{"SetEmptyName", "--set scene.name=", "scene.name: must not be empty"},
         BadFlag{"SetEmptyValue", "--set solver.C=", "solver.C: must be a number"},
         BadFlag{"SetUnknownKey", "--set solver.speed=3", "command line --set: solver.speed: unknown key"},
-        BadFlag{"SetUnknownSection", "--set gravity.g=9.81", "command line --set: gravity: unknown key"},
+        BadFlag{"SetUnknownSection", "--set weather.wind=9.81", "command line --set: weather: unknown key"},
         BadFlag{"SetIndexOutOfRange", "--set body.1.scale=2", "body.1.scale: index 1 is out of range"},
         BadFlag{"SetIndexNotDigits", "--set body.0x.scale=2", "body.0x.scale: '0x' must be an array index"},
         BadFlag{"SetInsideAValue", "--set fabric.size_m.0=0.2", "fabric.size_m.0: cannot set a value inside a non-table"},

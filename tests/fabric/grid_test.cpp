@@ -109,6 +109,25 @@ TEST_P(FabricGridShapes, WidthsTileTheFabric) {
   for (const double sum : weft_row) EXPECT_NEAR(sum, spec.width_m, 4.0 * n * kEps * spec.width_m);
 }
 
+// A node stands for the cells around it: one for an inner node, a half on an edge, a quarter at
+// a corner; together they are the whole fabric. Tolerance: a sum of n·m terms, each rounded.
+TEST_P(FabricGridShapes, NodeAreasTileTheFabric) {
+  const GridSpec spec = GetParam();
+  const FabricGrid grid(spec);
+  const std::vector<double> area = grid.node_areas();
+  ASSERT_EQ(area.size(), static_cast<std::size_t>(grid.node_count()));
+  const double cell = grid.spacing_warp() * grid.spacing_weft();
+  double total = 0.0;
+  for (int k = 0; k < grid.node_count(); ++k) {
+    const int i = grid.i_of(k), j = grid.j_of(k);
+    const int edges = (i == 0 || i == grid.nodes_warp() - 1) + (j == 0 || j == grid.nodes_weft() - 1);
+    EXPECT_NEAR(area[static_cast<std::size_t>(k)], cell / (1 << edges), 8.0 * kEps * cell) << k;
+    total += area[static_cast<std::size_t>(k)];
+  }
+  const double whole = spec.width_m * spec.height_m;
+  EXPECT_NEAR(total, whole, 8.0 * grid.node_count() * kEps * whole);
+}
+
 TEST_P(FabricGridShapes, SpringSlots) {
   // Slots: 0 warp towards −x, 1 warp towards +x, 2 weft towards −y, 3 weft towards +y.
   const FabricGrid grid(GetParam());

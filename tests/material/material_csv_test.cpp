@@ -162,9 +162,36 @@ INSTANTIATE_TEST_SUITE_P(
         BadTable{"unknown directive", "density_kg_m2,0.2\n" + kHeader + "0,0\n0.1,1\n", 1},
         BadTable{"directive key case", "Thickness_m,0.001\nstrain,stress_Pa\n0,0\n0.1,1\n", 1},
         BadTable{"directive after header", "strain,stress_Pa\nthickness_m,0.001\n0,0\n0.1,1\n", 2},
+        BadTable{"zero density", "areal_density_kg_m2,0\n" + kHeader + "0,0\n0.1,1\n", 1},
+        BadTable{"negative density", "# c\nareal_density_kg_m2,-0.2\n" + kHeader + "0,0\n0.1,1\n", 2},
+        BadTable{"NaN density", "areal_density_kg_m2,nan\n" + kHeader + "0,0\n0.1,1\n", 1},
+        BadTable{"density twice", "areal_density_kg_m2,0.2\nareal_density_kg_m2,0.2\n" + kHeader + "0,0\n0.1,1\n", 2},
+        BadTable{"density after header", kHeader + "areal_density_kg_m2,0.2\n0,0\n0.1,1\n", 2},
         BadTable{"tension-only not starting at 0,0", kHeader + "# c\n0,0.5\n0.1,1\n", 3},
         BadTable{"tension-only starting at strain 0.01", kHeader + "0.01,0\n0.1,1\n", 2},
         BadTable{"line too long", kHeader + "0,0\n0.1," + std::string(5000, '1') + "\n", 3}));
+
+// The areal density directive, with either table kind; absent, the file states none.
+TEST(MaterialCsv, ArealDensityDirective) {
+  std::istringstream tension("areal_density_kg_m2,0.324\n" + kHeader + "0,0\n0.1,1\n");
+  EXPECT_EQ(parse_material_file(tension, kSource).areal_density_kg_m2, 0.324);
+  std::istringstream stress("thickness_m,0.001\nareal_density_kg_m2 , 2.5e-1\nstrain,stress_Pa\n0,0\n0.1,1e5\n");
+  const MaterialFile file = parse_material_file(stress, kSource);
+  EXPECT_EQ(file.areal_density_kg_m2, 0.25);
+  EXPECT_DOUBLE_EQ(file.table.points()[1].tension_N_per_m, 100.0);
+  std::istringstream none(kHeader + "0,0\n0.1,1\n");
+  EXPECT_FALSE(parse_material_file(none, kSource).areal_density_kg_m2.has_value());
+}
+
+// The shipped tables carry their source's density (kg/m², materials/source/wang2011_berkeley).
+TEST(MaterialCsv, ShippedTablesStateTheirSourcesDensity) {
+  const std::vector<std::pair<std::string, double>> fabrics = {
+      {"white-swim-solid", 0.204}, {"ivory-rib-knit", 0.276}, {"11oz-black-denim", 0.324}};
+  for (const auto& [fabric, density] : fabrics)
+    for (const char* direction : {"_warp.csv", "_weft.csv"})
+      EXPECT_EQ(read_material_file(test::source_path("materials/" + fabric + direction)).areal_density_kg_m2,
+                density) << fabric << direction;
+}
 
 // "A table needs at least two points" belongs to the whole table, not to one line: the error
 // may name no line, or the line of the lone point; it must name the source.

@@ -153,5 +153,53 @@ TEST_F(ModelBuilder, TwoBodiesInTheirOwnUnitsBothHoldTheFabric) {
   EXPECT_LE(check.max_penetration_m, 1e-9);  // the projections' rounding, far below a facet
 }
 
+// Gravity weighs the fabric with the density its material files state; it is said in `modelled`.
+TEST_F(ModelBuilder, GravityWeighsTheFabricWithTheMaterialsDensity) {
+  dir.write("table.csv", "areal_density_kg_m2,0.25\nstrain,tension_N_per_m\n0,0\n1,500\n");
+  const Model model = build(scene("[gravity]\nacceleration_m_s2 = 9.81\n"));
+  ASSERT_EQ(model.loads.size(), static_cast<std::size_t>(model.node_count()));
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  for (const auto& f : model.loads) total += f;
+  EXPECT_NEAR(total.z(), -0.25 * 0.01 * 9.81, 1e-12 * 0.25 * 0.01 * 9.81);
+  EXPECT_EQ(total.head<2>().norm(), 0.0);
+  ASSERT_EQ(model.modelled.size(), 2u);
+  EXPECT_NE(model.modelled[1].find("gravity: 9.81 m/s²"), std::string::npos) << model.modelled[1];
+  EXPECT_NE(model.modelled[1].find("0.25 kg/m²"), std::string::npos) << model.modelled[1];
+}
+
+TEST_F(ModelBuilder, NoGravityNoLoads) {
+  const Model model = build(scene(""));
+  EXPECT_TRUE(model.loads.empty());
+  EXPECT_EQ(model.modelled.size(), 1u);
+}
+
+TEST_F(ModelBuilder, GravityWithoutADensityIsBlamedOnTheGravityTable) {
+  const InputError e = error(scene("[gravity]\n"));
+  EXPECT_EQ(e.where().line, 12) << e.what();
+  EXPECT_NE(std::string(e.what()).find("neither material file"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("areal_density_kg_m2"), std::string::npos) << e.what();
+}
+
+TEST_F(ModelBuilder, WarpAndWeftDensitiesMustAgree) {
+  dir.write("warp.csv", "areal_density_kg_m2,0.25\nstrain,tension_N_per_m\n0,0\n1,500\n");
+  dir.write("weft.csv", "areal_density_kg_m2,0.3\nstrain,tension_N_per_m\n0,0\n1,500\n");
+  std::string text = scene("[gravity]\n");
+  const std::string tables = "warp = \"table.csv\"\nweft = \"table.csv\"";
+  text.replace(text.find(tables), tables.size(), "warp = \"warp.csv\"\nweft = \"weft.csv\"");
+  const InputError e = error(text);
+  EXPECT_NE(e.where().file.find("weft.csv"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("differs from the warp file"), std::string::npos) << e.what();
+}
+
+// One file stating the density is enough; the other may leave it out.
+TEST_F(ModelBuilder, OneFileStatingTheDensityIsEnough) {
+  dir.write("weft.csv", "areal_density_kg_m2,0.3\nstrain,tension_N_per_m\n0,0\n1,500\n");
+  std::string text = scene("[gravity]\n");
+  const std::string weft = "weft = \"table.csv\"";
+  text.replace(text.find(weft), weft.size(), "weft = \"weft.csv\"");
+  const Model model = build(text);
+  EXPECT_NEAR(model.loads[0].z(), -0.3 * model.grid.node_areas()[0] * kStandardGravity_m_s2, 1e-15);
+}
+
 }  // namespace
 }  // namespace fabform

@@ -86,8 +86,8 @@ TEST(LoadScene, UnknownKeyNamesFileLineAndKey) {
 }
 
 TEST(LoadScene, UnknownTopLevelTable) {
-  const InputError e = load_error(std::string(kMinimal) + "[gravity]\ng = 9.81\n");
-  EXPECT_EQ(e.where().key, "gravity");
+  const InputError e = load_error(std::string(kMinimal) + "[weather]\nwind = 9.81\n");
+  EXPECT_EQ(e.where().key, "weather");
   EXPECT_EQ(e.where().line, 10);
 }
 

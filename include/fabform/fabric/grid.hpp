@@ -46,6 +46,10 @@ class FabricGrid {
   Eigen::Vector3d rest_position(int node) const;
 
   const std::vector<Spring>& springs() const { return springs_; }
+  /// The area of fabric each node stands for (m²): a quarter of w·L of every spring at it, so
+  /// an inner node carries one cell and the areas sum to W·H (each direction tiles it once).
+  std::vector<double> node_areas() const;
+
   /// Indices into springs() of the (up to four) springs at a node; -1 where there is none.
   const std::array<int, 4>& springs_at(int node) const { return springs_at_[node]; }
 

@@ -11,6 +11,7 @@
 #include "fabform/fabric/initial_shape.hpp"
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/placement.hpp"
+#include "fabform/model/external_loads.hpp"
 #include "fabform/solver/solve.hpp"
 
 namespace fabform {
@@ -38,6 +39,13 @@ struct CheckpointSpec {
   double every_minutes = 10.0;
 };
 
+// [gravity]: the fabric's weight along −z, its mass per area from the material files.
+struct GravitySpec {
+  bool on = false;  // the scene has a [gravity] table
+  double acceleration_m_s2 = kStandardGravity_m_s2;
+  SourceLocation where;
+};
+
 struct Scene {
   std::string path;
   std::string name;
@@ -51,6 +59,7 @@ struct Scene {
   SourceLocation weft_where;
   std::vector<BodySpec> bodies;
   std::vector<ConstraintSpec> constraints;
+  GravitySpec gravity;
   InitialShape initial;
   SourceLocation initial_where;
   SolverSpec solver;

@@ -1,6 +1,7 @@
 #pragma once
 // A fast quasi-static solver reaching relax's equilibrium: Newton's method on the fabric's total
-// stretch energy Π(x) = Σ w·L·∫₀^ε T. Each spring's stiffness is projected positive
+// potential energy Π(x) = Σ w·L·∫₀^ε T − Σ f·x (stretch, and constant loads such as its weight,
+// which add nothing to the Hessian). Each spring's stiffness is projected positive
 // semi-definite; the linear system, in each node's free directions (locked axes and the normal
 // of the body a node presses on eliminated), is solved by a sparse Cholesky factorisation (CHOLMOD)
 // regularised by μ·I; a backtracking line search on the energy moves the nodes as relax does

@@ -1,0 +1,23 @@
+#pragma once
+// Forces on the fabric that do not depend on where it is: its weight. They enter every node's
+// resultant R (stretch_forces.hpp) and, as the potential −Σ f·x, the energy Newton's line
+// search descends (potential_energy.hpp).
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fabform/fabric/grid.hpp"
+
+namespace fabform {
+
+/// Standard gravity (m/s²), the default of a scene's [gravity].
+constexpr double kStandardGravity_m_s2 = 9.80665;
+
+/// The weight of each node, along −z: areal density × the node's area × g.
+std::vector<Eigen::Vector3d> gravity_loads(const FabricGrid& grid, double areal_density_kg_m2,
+                                           double acceleration_m_s2);
+
+/// −Σ f_k · x_k (J): the potential of constant loads; 0 when there are none (`loads` empty).
+double load_energy(const std::vector<Eigen::Vector3d>& loads, const std::vector<Eigen::Vector3d>& x);
+
+}  // namespace fabform

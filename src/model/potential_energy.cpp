@@ -1,0 +1,29 @@
+#include "fabform/model/potential_energy.hpp"
+
+#include <cstddef>
+
+#include "fabform/fabric/spring.hpp"
+#include "fabform/model/external_loads.hpp"
+#include "fabform/model/stretch_forces.hpp"
+
+namespace fabform {
+
+double potential_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
+  return stretch_energy(model, x) + load_energy(model.loads, x);
+}
+
+double node_energy_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
+                      const Eigen::Vector3d& at) {
+  double energy = 0.0;
+  for (const int s : model.grid.springs_at(node)) {
+    if (s < 0) continue;
+    const Spring& spring = model.grid.springs()[static_cast<std::size_t>(s)];
+    const Eigen::Vector3d& other = x[static_cast<std::size_t>(spring.a == node ? spring.b : spring.a)];
+    energy += spring.a == node ? spring_energy(at, other, spring, model.table(spring.direction))
+                               : spring_energy(other, at, spring, model.table(spring.direction));
+  }
+  if (!model.loads.empty()) energy -= model.loads[static_cast<std::size_t>(node)].dot(at);
+  return energy;
+}
+
+}  // namespace fabform

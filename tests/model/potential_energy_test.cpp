@@ -1,0 +1,61 @@
+// The total potential energy and the node forces every solver uses are one model: with the
+// stretch of measured tables and the fabric's weight, −∂Π/∂x_k is node_force at every node,
+// checked by central differences.
+#include "fabform/model/potential_energy.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "fabform/material/material_csv.hpp"
+#include "fabform/model/external_loads.hpp"
+#include "fabform/model/stretch_forces.hpp"
+#include "test_paths.hpp"
+
+namespace fabform {
+namespace {
+
+TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
+  const FabricGrid grid({0.1, 0.08, 6, 4});
+  Model model{grid,
+              read_material_table(test::source_path("materials/white-swim-solid_warp.csv")),
+              read_material_table(test::source_path("materials/white-swim-solid_weft.csv")),
+              std::vector<AxisMask>(static_cast<std::size_t>(grid.node_count()), 0),
+              {},
+              {},
+              gravity_loads(grid, 0.204, kStandardGravity_m_s2),
+              {}};
+  // Stretched by 5–15 %, away from the tables' kinks at 0 strain, and crumpled out of plane.
+  std::mt19937 rng(11u);
+  std::uniform_real_distribution<double> jitter(-0.001, 0.001);
+  std::vector<Eigen::Vector3d> x;
+  for (int k = 0; k < grid.node_count(); ++k)
+    x.push_back(1.1 * grid.rest_position(k) + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng)));
+  // h: truncation error ~h²·Π''' and rounding ~ε·Π/h balance near 1e-7 m for these forces;
+  // the tolerance is relative to the largest force, 1e-6.
+  const double h = 1e-7;
+  double largest = 0.0;
+  for (int k = 0; k < grid.node_count(); ++k) largest = std::max(largest, node_force(model, x, k).norm());
+  for (int k = 0; k < grid.node_count(); ++k) {
+    const Eigen::Vector3d force = node_force(model, x, k);
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<Eigen::Vector3d> plus = x, minus = x;
+      plus[static_cast<std::size_t>(k)][axis] += h, minus[static_cast<std::size_t>(k)][axis] -= h;
+      const double slope = (potential_energy(model, plus) - potential_energy(model, minus)) / (2 * h);
+      EXPECT_NEAR(-slope, force[axis], 1e-6 * largest) << "node " << k << " axis " << axis;
+    }
+  }
+}
+
+TEST(PotentialEnergy, WithoutLoadsItIsTheStretchEnergy) {
+  const FabricGrid grid({0.1, 0.1, 2, 2});
+  const TensionTable table({{0.0, 0.0}, {1.0, 100.0}}, "linear");
+  Model model{grid, table, table, std::vector<AxisMask>(9, 0), {}, {}};
+  std::vector<Eigen::Vector3d> x;
+  for (int k = 0; k < grid.node_count(); ++k) x.push_back(1.2 * grid.rest_position(k));
+  EXPECT_EQ(potential_energy(model, x), stretch_energy(model, x));
+  EXPECT_GT(potential_energy(model, x), 0.0);
+}
+
+}  // namespace
+}  // namespace fabform
