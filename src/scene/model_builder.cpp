@@ -155,8 +155,13 @@ Model build_model(const Scene& scene) {
   FabricGrid grid = build_grid(scene);
   const MaterialFile warp = read_material(scene.warp_path, scene.warp_where);
   const MaterialFile weft = read_material(scene.weft_path, scene.weft_where);
-  Model model{grid,        warp.table,           weft.table, build_locks(scene, grid),
-              build_bodies(scene), build_start(scene, grid), {},
+  Model model{grid,
+              warp.table,
+              weft.table,
+              build_locks(scene, grid),
+              build_bodies(scene),
+              build_start(scene, grid),
+              {},  // loads: add_gravity's, when the scene has [gravity]
               {"stretch: warp and weft springs, tension-only piecewise-linear tables"}};
   add_gravity(scene, warp, weft, &model);
   check_clear_start(scene, model);
