@@ -9,7 +9,7 @@ which describe a biaxial continuum (Green strain -> second Piola-Kirchhoff
 stress, stiffness blended by strain and direction).  This script reads those
 tables uniaxially -- stretch along warp (or weft) with zero transverse Green
 strain -- and samples the result into the fabform material table format
-(version 1, specified in materials/README.md).  Doing it in a script, with
+(version 2, specified in materials/README.md).  Doing it in a script, with
 the inputs checked against their recorded git blob ids, keeps the shipped
 CSVs reproducible; `--check` lets a test prove the committed CSVs are what
 this derivation produces.
@@ -211,7 +211,8 @@ def split_pair(line, lineno):
 
 
 def parse_table(text):
-    """Parse a version-2 table; return (kind, thickness_m or None, [(strain, value)])."""
+    """Parse a version-2 table (areal_density_kg_m2 is checked, not returned); return
+    (kind, thickness_m or None, [(strain, value)])."""
     thickness, density, kind, points = None, None, None, []
     for lineno, raw in enumerate(text.split("\n"), start=1):
         line = raw[:-1] if raw.endswith("\r") else raw

@@ -2,12 +2,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <utility>
 
 #include "cli/commands.hpp"
 #include "cli/interrupt_handlers.hpp"
 #include "fabform/error.hpp"
 #include "fabform/geometry/mesh_report.hpp"
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/external_loads.hpp"
 #include "fabform/model/table_range.hpp"
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/output/progress.hpp"
@@ -100,17 +102,17 @@ std::vector<std::string> body_warnings(const Model& model) {
 }
 
 // The warnings of a state: strains beyond the tables or folded flat, nodes inside a body, and
-// the bodies' own.
+// the model's own (its bodies', a tolerance too coarse for its loads).
 std::vector<std::string> collect_warnings(const Model& model, const SolverState& state,
                                           const EquilibriumReport& check, double tolerance_m,
-                                          const std::vector<std::string>& of_bodies) {
+                                          const std::vector<std::string>& of_model) {
   std::vector<std::string> warnings = table_range_warnings(model, state.x);
   if (check.max_penetration_m > tolerance_m) {
     char text[160];
     std::snprintf(text, sizeof text, "a node lies %.3g m inside a body", check.max_penetration_m);
     warnings.emplace_back(text);
   }
-  warnings.insert(warnings.end(), of_bodies.begin(), of_bodies.end());
+  warnings.insert(warnings.end(), of_model.begin(), of_model.end());
   return warnings;
 }
 
@@ -167,12 +169,14 @@ int run(const RunArguments& args) {
                scene.name.c_str(), model.node_count(), model.bodies.size(),
                scene.solver.name.c_str(), scene.solver.tolerance_N(),
                start.recorded ? (", resumed after iteration " + std::to_string(so_far.iterations)).c_str() : "");
-  const std::vector<std::string> of_bodies = body_warnings(model);
+  std::vector<std::string> of_model = body_warnings(model);  // found once: they do not change
+  if (std::string w = load_tolerance_warning(model.loads, scene.solver.tolerance_N()); !w.empty())
+    of_model.push_back(std::move(w));
   const auto publish = [&](const SolverState& s, const Summary& summary) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     write_results(dir, RunRecord{scene, model, s, summary, check, inputs,
-                                 collect_warnings(model, s, check, 1e-6, of_bodies), wall, scene.solver.threads});
+                                 collect_warnings(model, s, check, 1e-6, of_model), wall, scene.solver.threads});
   };
   Progress progress(stderr);
   RunMonitor monitor(state, so_far, scene.checkpoint, publish, args.quiet ? nullptr : &progress);

@@ -182,14 +182,14 @@ std::string vrml_type_name(const SoNode* node) {
 
 // ---- The scene, prepared --------------------------------------------------------------------
 
-// Every node of type `type` in the scene, hidden Switch choices and nodes held in fields
-// (Shape.geometry) included. A callback action reaches the nodes themselves; SoSearchAction's
-// paths would end at the Shape, and their hidden tails are reachable only by casting SoPath to
-// SoFullPath, an object it is not.
+// Every node of type `type` that the triangulation will reach: nodes held in fields
+// (Shape.geometry) included, a Switch's chosen child only (Coin's VRMLSwitch traverses no
+// other). A callback action reaches the nodes themselves; SoSearchAction's paths would end at
+// the Shape, and their hidden tails are reachable only by casting SoPath to SoFullPath, an
+// object it is not.
 std::vector<SoNode*> find_all(SoNode* root, const SoType& type) {
   std::vector<SoNode*> nodes;
   SoCallbackAction visit;
-  visit.setCallbackAll(TRUE);
   visit.addPreCallback(
       type,
       [](void* found, SoCallbackAction*, const SoNode* node) {

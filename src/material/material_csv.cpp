@@ -81,6 +81,7 @@ class TableParser {
       const auto value = parse_number(cells.second);
       if (!value || *value <= 0.0) fail("areal_density_kg_m2 must be a positive number of kg/m²");
       areal_density_kg_m2_ = value;
+      areal_density_line_ = line_;
       return;
     }
     if (cells.first == "thickness_m") {
@@ -126,7 +127,7 @@ class TableParser {
     if (is_stress_)
       for (auto& point : points_) point.tension_N_per_m *= *thickness_m_;
     try {
-      return {TensionTable(points_, source_), areal_density_kg_m2_};
+      return {TensionTable(points_, source_), areal_density_kg_m2_, areal_density_line_};
     } catch (const std::invalid_argument& error) {
       fail(error.what(), first_point_line_);
     }
@@ -136,6 +137,7 @@ class TableParser {
   int line_ = 0;
   int header_line_ = 0;
   int thickness_line_ = 0;
+  int areal_density_line_ = 0;
   int first_point_line_ = 0;
   bool header_seen_ = false;
   bool is_stress_ = false;

@@ -12,8 +12,11 @@ double potential_energy(const Model& model, const std::vector<Eigen::Vector3d>& 
   return stretch_energy(model, x) + load_energy(model.loads, x);
 }
 
-double node_energy_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
-                      const Eigen::Vector3d& at) {
+namespace {
+
+// The energy of the springs at `node` with the node at `at`.
+double node_spring_energy(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
+                          const Eigen::Vector3d& at) {
   double energy = 0.0;
   for (const int s : model.grid.springs_at(node)) {
     if (s < 0) continue;
@@ -22,8 +25,17 @@ double node_energy_at(const Model& model, const std::vector<Eigen::Vector3d>& x,
     energy += spring.a == node ? spring_energy(at, other, spring, model.table(spring.direction))
                                : spring_energy(other, at, spring, model.table(spring.direction));
   }
-  if (!model.loads.empty()) energy -= model.loads[static_cast<std::size_t>(node)].dot(at);
   return energy;
+}
+
+}  // namespace
+
+double node_energy_change(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
+                          const Eigen::Vector3d& at) {
+  const auto k = static_cast<std::size_t>(node);
+  double change = node_spring_energy(model, x, node, at) - node_spring_energy(model, x, node, x[k]);
+  if (!model.loads.empty()) change -= model.loads[k].dot(at - x[k]);
+  return change;
 }
 
 }  // namespace fabform

@@ -1,7 +1,5 @@
 #include "fabform/scene/model_builder.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -43,11 +41,23 @@ double areal_density(const Scene& scene, const MaterialFile& warp, const Materia
                      "gravity needs the fabric's mass per area: neither material file (" +
                          scene.warp_path + ", " + scene.weft_path +
                          ") has an 'areal_density_kg_m2,VALUE' line");
-  // The same fabric, written twice: equal up to the rounding of a decimal number.
-  if (a && b && std::abs(*a - *b) > 1e-9 * std::max(*a, *b))
-    throw InputError({scene.weft_path, 0, ""}, "areal_density_kg_m2 " + std::to_string(*b) +
-                                                   " differs from the warp file's " + std::to_string(*a));
+  // The same fabric written twice: the same decimal text reads as the same double.
+  if (a && b && *a != *b) {
+    char text[320];
+    std::snprintf(text, sizeof text, "areal_density_kg_m2 %.17g differs from %.17g in the warp file %s",
+                  *b, *a, scene.warp_path.c_str());
+    throw InputError({scene.weft_path, weft.areal_density_line, ""}, text);
+  }
   return a ? *a : *b;
+}
+
+// Gravity needs something to hang from: a node held in z, or a body to rest on.
+void require_support(const Scene& scene, const Model& model) {
+  if (!model.bodies.empty()) return;
+  for (const AxisMask lock : model.locks)
+    if (lock & kLockZ) return;
+  throw InputError(scene.gravity.where,
+                   "gravity with nothing to hold the fabric up: no node is held in z and the scene has no body");
 }
 
 std::string gravity_term(double density_kg_m2, double acceleration_m_s2) {
@@ -60,6 +70,7 @@ std::string gravity_term(double density_kg_m2, double acceleration_m_s2) {
 
 void add_gravity(const Scene& scene, const MaterialFile& warp, const MaterialFile& weft, Model* model) {
   if (!scene.gravity.on) return;
+  require_support(scene, *model);
   const double density = areal_density(scene, warp, weft);
   model->loads = gravity_loads(model->grid, density, scene.gravity.acceleration_m_s2);
   model->modelled.push_back(gravity_term(density, scene.gravity.acceleration_m_s2));

@@ -76,11 +76,10 @@ class Relaxation {
     // Seed 003's rule alone can hold a node for ever once its tension-only springs go slack
     // under a load: wherever it moves within the slack, the force on it is its load, unchanged,
     // and a step out of the slack overshoots. Then the first step that lowers the node's
-    // energy is taken. Without loads it is reached where a fabric lies folded and slack (the
-    // shipped torso band), and it does no harm there: the energy only goes down.
-    const double energy = node_energy_at(model_, state_.x, k, state_.x[i]);
+    // energy is taken. Without loads, seed 003's rule is kept as published.
+    if (model_.loads.empty()) return;
     take_step(k, direction, [&](const NodeMove& candidate) {
-      return node_energy_at(model_, state_.x, k, candidate.x) < energy;
+      return node_energy_change(model_, state_.x, k, candidate.x) < 0.0;
     });
   }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -47,6 +48,33 @@ TEST(LoadEnergy, ItsGradientIsMinusTheLoads) {
       const double slope = (load_energy(loads, plus) - load_energy(loads, minus)) / (2 * h);
       EXPECT_NEAR(slope, -loads[k][axis], 1e-9 * loads[0].norm()) << k << " " << axis;
     }
+}
+
+TEST(LoadEnergy, ItsChangeIsTheDifferenceOfItsValues) {
+  const FabricGrid grid({0.1, 0.1, 3, 3});
+  const std::vector<Eigen::Vector3d> loads = gravity_loads(grid, 0.2, 9.81);
+  std::vector<Eigen::Vector3d> from, to;
+  for (int k = 0; k < grid.node_count(); ++k) {
+    from.push_back(grid.rest_position(k));
+    to.push_back(grid.rest_position(k) + Eigen::Vector3d(0.001 * k, -0.002, -0.003 * k));
+  }
+  const double change = load_energy_change(loads, from, to);
+  ASSERT_TRUE(std::isfinite(change) && change != 0.0);
+  EXPECT_NEAR(change, load_energy(loads, to) - load_energy(loads, from), 1e-12 * std::abs(change));
+  EXPECT_EQ(load_energy_change(loads, from, from), 0.0);
+}
+
+// e must be well below a node's weight, or a run may stop before the weight shows.
+TEST(LoadToleranceWarning, WhenTheToleranceIsNotWellBelowTheLightestNodesWeight) {
+  const FabricGrid grid({0.1, 0.1, 40, 40});  // seed 003's mold grid
+  const std::vector<Eigen::Vector3d> loads = gravity_loads(grid, 0.204, kStandardGravity_m_s2);
+  const double corner = 0.204 * 0.0025 * 0.0025 / 4 * kStandardGravity_m_s2;  // ~3.1e-6 N
+  const std::string warning = load_tolerance_warning(loads, 1e-3);
+  EXPECT_NE(warning.find("e = 0.001 N"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("lightest node's weight (3.13e-06 N)"), std::string::npos) << warning;
+  EXPECT_EQ(load_tolerance_warning(loads, 0.1 * corner), "") << "just below the bound";
+  EXPECT_NE(load_tolerance_warning(loads, 0.1 * corner * (1 + 1e-12)), "");
+  EXPECT_EQ(load_tolerance_warning({}, 1.0), "") << "no loads";
 }
 
 TEST(LoadEnergy, NoLoadsNoEnergy) {

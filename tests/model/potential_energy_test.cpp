@@ -47,6 +47,29 @@ TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
   }
 }
 
+// Moving one node changes Π by node_energy_change: the same number relax judges its steps by.
+TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWhole) {
+  const FabricGrid grid({0.1, 0.08, 5, 4});
+  Model model{grid,
+              read_material_table(test::source_path("materials/ivory-rib-knit_warp.csv")),
+              read_material_table(test::source_path("materials/ivory-rib-knit_weft.csv")),
+              std::vector<AxisMask>(static_cast<std::size_t>(grid.node_count()), 0),
+              {},
+              {},
+              gravity_loads(grid, 0.276, kStandardGravity_m_s2),
+              {}};
+  std::vector<Eigen::Vector3d> x;
+  for (int k = 0; k < grid.node_count(); ++k) x.push_back(1.08 * grid.rest_position(k));
+  for (const int node : {0, grid.node(2, 1), grid.node(4, 3)}) {
+    const Eigen::Vector3d at = x[static_cast<std::size_t>(node)] + Eigen::Vector3d(0.001, -0.0005, -0.002);
+    std::vector<Eigen::Vector3d> moved = x;
+    moved[static_cast<std::size_t>(node)] = at;
+    const double whole = potential_energy(model, moved) - potential_energy(model, x);
+    // The whole's difference carries the rounding of Π (~1e-16 of it); the node's does not.
+    EXPECT_NEAR(node_energy_change(model, x, node, at), whole, 1e-9 * std::abs(whole)) << node;
+  }
+}
+
 TEST(PotentialEnergy, WithoutLoadsItIsTheStretchEnergy) {
   const FabricGrid grid({0.1, 0.1, 2, 2});
   const TensionTable table({{0.0, 0.0}, {1.0, 100.0}}, "linear");

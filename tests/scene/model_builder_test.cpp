@@ -188,7 +188,21 @@ TEST_F(ModelBuilder, WarpAndWeftDensitiesMustAgree) {
   text.replace(text.find(tables), tables.size(), "warp = \"warp.csv\"\nweft = \"weft.csv\"");
   const InputError e = error(text);
   EXPECT_NE(e.where().file.find("weft.csv"), std::string::npos) << e.what();
-  EXPECT_NE(std::string(e.what()).find("differs from the warp file"), std::string::npos) << e.what();
+  EXPECT_EQ(e.where().line, 1) << e.what();
+  EXPECT_NE(std::string(e.what()).find("0.29999999999999999 differs from 0.25 in the warp file"),
+            std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("warp.csv"), std::string::npos) << e.what();
+}
+
+// Under gravity something must hold the fabric up: a node held in z, or a body.
+TEST_F(ModelBuilder, GravityWithNothingToHangFromIsRefused) {
+  dir.write("table.csv", "areal_density_kg_m2,0.25\nstrain,tension_N_per_m\n0,0\n1,500\n");
+  const std::string fabric = "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [4, 4]\n"
+                             "warp = \"table.csv\"\nweft = \"table.csv\"\n[gravity]\n";
+  const InputError e = error(fabric + "[[constraint]]\nnodes = \"perimeter\"\naxes = \"xy\"\n");
+  EXPECT_EQ(e.where().line, 6) << e.what();
+  EXPECT_NE(std::string(e.what()).find("nothing to hold the fabric up"), std::string::npos) << e.what();
+  EXPECT_EQ(build(fabric + "[[constraint]]\nnodes = \"corners\"\naxes = \"z\"\n").loads.size(), 25u);
 }
 
 // One file stating the density is enough; the other may leave it out.

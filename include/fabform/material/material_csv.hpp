@@ -1,5 +1,5 @@
 #pragma once
-// Reads a fabform material table (CSV, version 1; the format is specified in
+// Reads a fabform material table (CSV, version 2; the format is specified in
 // materials/README.md). Parsing stays here, at the edge: the rest of fabform sees a
 // TensionTable in N/m.
 #include <istream>
@@ -15,6 +15,7 @@ namespace fabform {
 struct MaterialFile {
   TensionTable table;
   std::optional<double> areal_density_kg_m2;
+  int areal_density_line = 0;  // where the directive is, for errors about it
 };
 
 /// Reads a material file; throws InputError naming the file and line on any problem.

@@ -12,9 +12,10 @@ namespace fabform {
 /// Stretch energy plus the potential of the external loads (J).
 double potential_energy(const Model& model, const std::vector<Eigen::Vector3d>& x);
 
-/// The part of Π that depends on `node`, with the node moved to `at`: the energy of its springs
-/// and the potential of its load (J). Moving one node changes Π by exactly the change of this.
-double node_energy_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
-                      const Eigen::Vector3d& at);
+/// How much Π changes when `node` alone moves from x[node] to `at` (J): its springs' energy
+/// change and the work against its load. The load's part is −f·(at − x), not a difference of
+/// −f·x at two absolute heights, so it does not depend on where the scene sits.
+double node_energy_change(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
+                          const Eigen::Vector3d& at);
 
 }  // namespace fabform

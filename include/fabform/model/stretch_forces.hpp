@@ -1,6 +1,8 @@
 #pragma once
 // The stretch term of seed 003's Eq. (1): the resultant R of the warp and weft springs around
-// a node (Eq. 3), and the springs' deformations d_k that set the relaxation step (Eq. 4).
+// a node (Eq. 3) with the node's constant load added (so R is every force on it), and the
+// springs' deformations d_k that set the relaxation step (Eq. 4). stretch_energy is the
+// springs' alone; the loads' potential is in external_loads.hpp, the sum in potential_energy.hpp.
 #include <vector>
 
 #include <Eigen/Core>
