@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 #include "fabform/material/material_csv.hpp"
 #include "fabform/model/external_loads.hpp"
@@ -15,16 +16,21 @@
 namespace fabform {
 namespace {
 
+// A free fabric of a shipped material, weighed with its density.
+Model weighed_fabric(const FabricGrid& grid, const std::string& fabric, double density_kg_m2) {
+  return Model{grid,
+               read_material_table(test::source_path("materials/" + fabric + "_warp.csv")),
+               read_material_table(test::source_path("materials/" + fabric + "_weft.csv")),
+               std::vector<AxisMask>(static_cast<std::size_t>(grid.node_count()), 0),
+               {},
+               {},
+               gravity_loads(grid, density_kg_m2, kStandardGravity_m_s2),
+               {}};
+}
+
 TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
   const FabricGrid grid({0.1, 0.08, 6, 4});
-  Model model{grid,
-              read_material_table(test::source_path("materials/white-swim-solid_warp.csv")),
-              read_material_table(test::source_path("materials/white-swim-solid_weft.csv")),
-              std::vector<AxisMask>(static_cast<std::size_t>(grid.node_count()), 0),
-              {},
-              {},
-              gravity_loads(grid, 0.204, kStandardGravity_m_s2),
-              {}};
+  const Model model = weighed_fabric(grid, "white-swim-solid", 0.204);
   // Stretched by 5–15 %, away from the tables' kinks at 0 strain, and crumpled out of plane.
   std::mt19937 rng(11u);
   std::uniform_real_distribution<double> jitter(-0.001, 0.001);
@@ -50,14 +56,7 @@ TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
 // Moving one node changes Π by node_energy_change: the same number relax judges its steps by.
 TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWhole) {
   const FabricGrid grid({0.1, 0.08, 5, 4});
-  Model model{grid,
-              read_material_table(test::source_path("materials/ivory-rib-knit_warp.csv")),
-              read_material_table(test::source_path("materials/ivory-rib-knit_weft.csv")),
-              std::vector<AxisMask>(static_cast<std::size_t>(grid.node_count()), 0),
-              {},
-              {},
-              gravity_loads(grid, 0.276, kStandardGravity_m_s2),
-              {}};
+  const Model model = weighed_fabric(grid, "ivory-rib-knit", 0.276);
   std::vector<Eigen::Vector3d> x;
   for (int k = 0; k < grid.node_count(); ++k) x.push_back(1.08 * grid.rest_position(k));
   for (const int node : {0, grid.node(2, 1), grid.node(4, 3)}) {
