@@ -210,10 +210,13 @@ def split_pair(line, lineno):
     return fields
 
 
+DIRECTIVES = ("thickness_m", "areal_density_kg_m2")  # each a number > 0, before the header
+
+
 def parse_table(text):
     """Parse a version-2 table (areal_density_kg_m2 is checked, not returned); return
     (kind, thickness_m or None, [(strain, value)])."""
-    thickness, density, kind, points = None, None, None, []
+    directives, kind, points = {}, None, []
     for lineno, raw in enumerate(text.split("\n"), start=1):
         line = raw[:-1] if raw.endswith("\r") else raw
         line = line.strip(" \t")
@@ -223,23 +226,17 @@ def parse_table(text):
             kind = line.split(",")[1]
             continue
         a, b = split_pair(line, lineno)
-        if kind is None and a == "areal_density_kg_m2":
-            if density is not None:
-                raise TableError("line %d: duplicate areal_density_kg_m2" % lineno)
-            density = parse_number(b, lineno)
-            if density <= 0:
-                raise TableError("line %d: areal_density_kg_m2 must be > 0" % lineno)
-            continue
         if kind is None:
-            if a != "thickness_m":
+            if a not in DIRECTIVES:
                 raise TableError("line %d: unknown directive %r" % (lineno, a))
-            if thickness is not None:
-                raise TableError("line %d: duplicate thickness_m" % lineno)
-            thickness = parse_number(b, lineno)
-            if thickness <= 0:
-                raise TableError("line %d: thickness_m must be > 0" % lineno)
+            if a in directives:
+                raise TableError("line %d: duplicate %s" % (lineno, a))
+            directives[a] = parse_number(b, lineno)
+            if directives[a] <= 0:
+                raise TableError("line %d: %s must be > 0" % (lineno, a))
             continue
         points.append((parse_number(a, lineno), parse_number(b, lineno)))
+    thickness = directives.get("thickness_m")
     check_table(kind, thickness, points)
     return kind, thickness, points
 

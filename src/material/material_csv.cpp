@@ -75,23 +75,18 @@ class TableParser {
     take_point(*cells);
   }
 
+  // A `key,value` directive whose value must be positive: stored once, with its line.
+  void take_positive(const Cells& cells, const char* unit, std::optional<double>* value, int* line) {
+    if (*value) fail(cells.first + " is given twice");
+    *value = parse_number(cells.second);
+    if (!*value || **value <= 0.0) fail(cells.first + " must be a positive number of " + unit);
+    *line = line_;
+  }
+
   void take_before_header(const Cells& cells) {
-    if (cells.first == "areal_density_kg_m2") {
-      if (areal_density_kg_m2_) fail("areal_density_kg_m2 is given twice");
-      const auto value = parse_number(cells.second);
-      if (!value || *value <= 0.0) fail("areal_density_kg_m2 must be a positive number of kg/m²");
-      areal_density_kg_m2_ = value;
-      areal_density_line_ = line_;
-      return;
-    }
-    if (cells.first == "thickness_m") {
-      if (thickness_m_) fail("thickness_m is given twice");
-      const auto value = parse_number(cells.second);
-      if (!value || *value <= 0.0) fail("thickness_m must be a positive number of metres");
-      thickness_m_ = value;
-      thickness_line_ = line_;
-      return;
-    }
+    if (cells.first == "areal_density_kg_m2")
+      return take_positive(cells, "kg/m²", &areal_density_kg_m2_, &areal_density_line_);
+    if (cells.first == "thickness_m") return take_positive(cells, "metres", &thickness_m_, &thickness_line_);
     if (cells.first != "strain")
       fail("expected the header 'strain,tension_N_per_m' or 'strain,stress_Pa', or a "
            "'thickness_m,VALUE' or 'areal_density_kg_m2,VALUE' line before it; got '" + cells.first + "," + cells.second + "'");
