@@ -7,7 +7,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Eigen::Vector3d wrapped(const FabricGrid& grid, int node, const Eigen::Vector3d& origin,
+Eigen::Vector3d wrapped(const Fabric& grid, int node, const Eigen::Vector3d& origin,
                         const InitialShape& shape) {
   const Eigen::Vector3d flat = grid.rest_position(node);
   const double fraction = flat.x() / grid.spec().width_m - 0.5;
@@ -16,7 +16,7 @@ Eigen::Vector3d wrapped(const FabricGrid& grid, int node, const Eigen::Vector3d&
           shape.axis_xy_m.y() + shape.radius_m * std::sin(angle), origin.z() + flat.y()};
 }
 
-double lift_of(const FabricGrid& grid, int node, const InitialShape& shape) {
+double lift_of(const Fabric& grid, int node, const InitialShape& shape) {
   const Eigen::Vector3d flat = grid.rest_position(node);
   switch (shape.kind) {
     case InitialShape::Kind::lift: return grid.on_perimeter(node) ? 0.0 : shape.height_m;
@@ -56,7 +56,7 @@ bool parse_initial_kind(const std::string& name, InitialShape::Kind* kind) {
   return true;
 }
 
-std::vector<Eigen::Vector3d> initial_positions(const FabricGrid& grid,
+std::vector<Eigen::Vector3d> initial_positions(const Fabric& grid,
                                                const Eigen::Vector3d& origin,
                                                const InitialShape& shape) {
   std::vector<Eigen::Vector3d> positions(static_cast<std::size_t>(grid.node_count()));

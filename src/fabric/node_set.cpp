@@ -20,11 +20,14 @@ bool parse_named_node_set(const std::string& name, NodeSetSpec* spec) {
 
 namespace {
 
-bool in_named_set(const FabricGrid& grid, NodeSetSpec::Kind kind, int i, int j) {
+// Edges and corners are a rectangle's: a circle has none.
+bool in_named_set(const Fabric& fabric, NodeSetSpec::Kind kind, int node) {
   using Kind = NodeSetSpec::Kind;
-  const int last_i = grid.nodes_warp() - 1, last_j = grid.nodes_weft() - 1;
+  if (kind == Kind::perimeter) return fabric.on_perimeter(node);
+  if (fabric.spec().shape != FabricSpec::Shape::rectangle) return false;
+  const int i = fabric.i_of(node), j = fabric.j_of(node);
+  const int last_i = fabric.nodes_warp() - 1, last_j = fabric.nodes_weft() - 1;
   switch (kind) {
-    case Kind::perimeter: return i == 0 || j == 0 || i == last_i || j == last_j;
     case Kind::edge_left: return i == 0;
     case Kind::edge_right: return i == last_i;
     case Kind::edge_bottom: return j == 0;
@@ -34,11 +37,11 @@ bool in_named_set(const FabricGrid& grid, NodeSetSpec::Kind kind, int i, int j) 
   }
 }
 
-int nearest_node(const FabricGrid& grid, const Eigen::Vector2d& point) {
+int nearest_node(const Fabric& fabric, const Eigen::Vector2d& point) {
   int best = 0;
   double best_distance = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < grid.node_count(); ++k) {
-    const double distance = (grid.rest_position(k).head<2>() - point).squaredNorm();
+  for (int k = 0; k < fabric.node_count(); ++k) {
+    const double distance = (fabric.rest_position(k).head<2>() - point).squaredNorm();
     if (distance < best_distance) best = k, best_distance = distance;
   }
   return best;
@@ -50,19 +53,18 @@ bool in_box(const Eigen::Vector2d& p, const NodeSetSpec& spec) {
 
 }  // namespace
 
-std::vector<int> select_nodes(const FabricGrid& grid, const NodeSetSpec& spec) {
+std::vector<int> select_nodes(const Fabric& fabric, const NodeSetSpec& spec) {
   using Kind = NodeSetSpec::Kind;
   std::vector<int> nodes;
   if (spec.kind == Kind::index) {
-    if (spec.i >= 0 && spec.j >= 0 && spec.i < grid.nodes_warp() && spec.j < grid.nodes_weft())
-      nodes.push_back(grid.node(spec.i, spec.j));
+    if (const int k = fabric.node(spec.i, spec.j); k >= 0) nodes.push_back(k);
     return nodes;
   }
-  if (spec.kind == Kind::nearest) return {nearest_node(grid, spec.point)};
-  for (int k = 0; k < grid.node_count(); ++k) {
+  if (spec.kind == Kind::nearest) return {nearest_node(fabric, spec.point)};
+  for (int k = 0; k < fabric.node_count(); ++k) {
     const bool selected = spec.kind == Kind::box
-                              ? in_box(grid.rest_position(k).head<2>(), spec)
-                              : in_named_set(grid, spec.kind, grid.i_of(k), grid.j_of(k));
+                              ? in_box(fabric.rest_position(k).head<2>(), spec)
+                              : in_named_set(fabric, spec.kind, k);
     if (selected) nodes.push_back(k);
   }
   return nodes;

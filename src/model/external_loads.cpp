@@ -7,7 +7,7 @@
 
 namespace fabform {
 
-std::vector<Eigen::Vector3d> gravity_loads(const FabricGrid& grid, double areal_density_kg_m2,
+std::vector<Eigen::Vector3d> gravity_loads(const Fabric& grid, double areal_density_kg_m2,
                                            double acceleration_m_s2) {
   const std::vector<double> area = grid.node_areas();
   std::vector<Eigen::Vector3d> loads(area.size());

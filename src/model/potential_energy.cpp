@@ -18,12 +18,11 @@ namespace {
 double node_spring_energy(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
                           const Eigen::Vector3d& at) {
   double energy = 0.0;
-  for (const int s : model.grid.springs_at(node)) {
-    if (s < 0) continue;
-    const Spring& spring = model.grid.springs()[static_cast<std::size_t>(s)];
+  for (const int s : model.fabric.springs_at(node)) {
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     const Eigen::Vector3d& other = x[static_cast<std::size_t>(spring.a == node ? spring.b : spring.a)];
-    energy += spring.a == node ? spring_energy(at, other, spring, model.table(spring.direction))
-                               : spring_energy(other, at, spring, model.table(spring.direction));
+    energy += spring.a == node ? spring_energy(at, other, spring, model.table(spring.kind))
+                               : spring_energy(other, at, spring, model.table(spring.kind));
   }
   return energy;
 }

@@ -11,12 +11,11 @@ namespace fabform {
 Eigen::Vector3d node_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
                               const Eigen::Vector3d& at) {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  for (const int s : model.grid.springs_at(node)) {
-    if (s < 0) continue;
-    const Spring& spring = model.grid.springs()[static_cast<std::size_t>(s)];
+  for (const int s : model.fabric.springs_at(node)) {
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     const int other = spring.a == node ? spring.b : spring.a;
     force += spring_force_on_a(at, x[static_cast<std::size_t>(other)], spring,
-                               model.table(spring.direction));
+                               model.table(spring.kind));
   }
   if (!model.loads.empty()) force += model.loads[static_cast<std::size_t>(node)];
   return force;
@@ -24,9 +23,8 @@ Eigen::Vector3d node_force_at(const Model& model, const std::vector<Eigen::Vecto
 
 double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x, int node) {
   double sum = 0.0;
-  for (const int s : model.grid.springs_at(node)) {
-    if (s < 0) continue;
-    const Spring& spring = model.grid.springs()[static_cast<std::size_t>(s)];
+  for (const int s : model.fabric.springs_at(node)) {
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     const double length =
         (x[static_cast<std::size_t>(spring.b)] - x[static_cast<std::size_t>(spring.a)]).norm();
     sum += std::abs(length - spring.rest_length);
@@ -35,7 +33,7 @@ double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x
 }
 
 double stretch_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
-  const std::vector<Spring>& springs = model.grid.springs();
+  const std::vector<Spring>& springs = model.fabric.springs();
   const auto count = static_cast<std::ptrdiff_t>(springs.size());
   // Each spring's energy in parallel, summed in spring order: the same bits for any thread
   // count, so a line search decides alike on 1 or 2 threads (a reduction's order would not).
@@ -45,7 +43,7 @@ double stretch_energy(const Model& model, const std::vector<Eigen::Vector3d>& x)
     const Spring& spring = springs[static_cast<std::size_t>(i)];
     energies[static_cast<std::size_t>(i)] =
         spring_energy(x[static_cast<std::size_t>(spring.a)], x[static_cast<std::size_t>(spring.b)],
-                      spring, model.table(spring.direction));
+                      spring, model.table(spring.kind));
   }
   double energy = 0.0;
   for (const double e : energies) energy += e;
@@ -56,11 +54,12 @@ NodeStrains node_strains(const Model& model, const std::vector<Eigen::Vector3d>&
   const auto n = static_cast<std::size_t>(model.node_count());
   NodeStrains strains{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
   std::vector<int> warp_count(n, 0), weft_count(n, 0);
-  for (const Spring& spring : model.grid.springs()) {
+  for (const Spring& spring : model.fabric.springs()) {
+    if (spring.kind != SpringKind::warp && spring.kind != SpringKind::weft) continue;
     const auto a = static_cast<std::size_t>(spring.a), b = static_cast<std::size_t>(spring.b);
     const double strain = spring_strain(x[a], x[b], spring.rest_length);
-    auto& field = spring.direction == Direction::warp ? strains.warp : strains.weft;
-    auto& count = spring.direction == Direction::warp ? warp_count : weft_count;
+    auto& field = spring.kind == SpringKind::warp ? strains.warp : strains.weft;
+    auto& count = spring.kind == SpringKind::warp ? warp_count : weft_count;
     field[a] += strain, field[b] += strain;
     ++count[a], ++count[b];
   }

@@ -1,6 +1,7 @@
 #include "fabform/model/table_range.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -30,13 +31,14 @@ std::string describe(const TensionTable& table, const char* direction, const Ran
   return text;
 }
 
-std::string describe_collapse(const char* direction, const RangeCount& c, int total) {
+std::string describe_collapse(const char* direction, const RangeCount& c, int total, bool bending) {
   char text[512];
   std::snprintf(text, sizeof text,
-                "%d of %d %s springs are compressed below %.0f %% (down to %.3g %%): the tables "
-                "resist no compression and no bending is modelled, so nothing keeps the fabric "
-                "from folding flat there; this rest is degenerate",
-                c.collapsed, total, direction, 100 * kCollapsedStrain, 100 * c.most_compressed);
+                "%d of %d %s springs are compressed below %.0f %% (down to %.3g %%): their table "
+                "resists no compression%s, so nothing keeps the fabric from folding flat there; "
+                "this rest is degenerate",
+                c.collapsed, total, direction, 100 * kCollapsedStrain, 100 * c.most_compressed,
+                bending ? " and the bend springs did not stop it" : " and no bending is modelled");
   return text;
 }
 
@@ -44,15 +46,16 @@ std::string describe_collapse(const char* direction, const RangeCount& c, int to
 
 std::vector<std::string> table_range_warnings(const Model& model,
                                               const std::vector<Eigen::Vector3d>& x) {
-  RangeCount warp, weft;
-  int warp_total = 0, weft_total = 0;
-  for (const Spring& spring : model.grid.springs()) {
-    const bool is_warp = spring.direction == Direction::warp;
-    const TensionTable& table = model.table(spring.direction);
+  constexpr std::size_t kKinds = 4;  // SpringKind's values
+  std::array<RangeCount, kKinds> count{};
+  std::array<int, kKinds> total{};
+  for (const Spring& spring : model.fabric.springs()) {
+    const auto kind = static_cast<std::size_t>(spring.kind);
+    const TensionTable& table = model.table(spring.kind);
     const double strain = spring_strain(x[static_cast<std::size_t>(spring.a)],
                                         x[static_cast<std::size_t>(spring.b)], spring.rest_length);
-    ++(is_warp ? warp_total : weft_total);
-    RangeCount& c = is_warp ? warp : weft;
+    ++total[kind];
+    RangeCount& c = count[kind];
     if (strain < kCollapsedStrain && table.min_strain() >= 0.0) {
       ++c.collapsed;
       c.most_compressed = std::min(c.most_compressed, strain);
@@ -62,10 +65,12 @@ std::vector<std::string> table_range_warnings(const Model& model,
     if (std::abs(strain) > std::abs(c.extreme)) c.extreme = strain;
   }
   std::vector<std::string> warnings;
-  if (warp.beyond > 0) warnings.push_back(describe(model.warp, "warp", warp, warp_total));
-  if (weft.beyond > 0) warnings.push_back(describe(model.weft, "weft", weft, weft_total));
-  if (warp.collapsed > 0) warnings.push_back(describe_collapse("warp", warp, warp_total));
-  if (weft.collapsed > 0) warnings.push_back(describe_collapse("weft", weft, weft_total));
+  for (std::size_t k = 0; k < kKinds; ++k)
+    if (count[k].beyond > 0)
+      warnings.push_back(describe(model.table(SpringKind(k)), to_string(SpringKind(k)), count[k], total[k]));
+  for (std::size_t k = 0; k < kKinds; ++k)
+    if (count[k].collapsed > 0)
+      warnings.push_back(describe_collapse(to_string(SpringKind(k)), count[k], total[k], model.bend.has_value()));
   return warnings;
 }
 

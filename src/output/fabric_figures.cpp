@@ -9,41 +9,54 @@
 namespace fabform {
 namespace {
 
-// A cell of the grid: corners (i, j), (i+1, j), (i+1, j+1), (i, j+1).
+// A face of the fabric as formed: its area and the mean strain of its warp sides and of its
+// weft sides (NaN where it has none of a kind, as some of an arc mesh's faces).
 struct Cell {
   double area_m2;
-  double warp_strain;  // mean of its two warp edges
-  double weft_strain;  // mean of its two weft edges
+  double warp_strain;
+  double weft_strain;
 };
 
-double triangle_area(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  return 0.5 * (b - a).cross(c - a).norm();
+int spring_between(const Fabric& fabric, int p, int q) {
+  for (const int s : fabric.springs_at(p)) {
+    const Spring& spring = fabric.springs()[static_cast<std::size_t>(s)];
+    if ((spring.a == q || spring.b == q) && spring.kind <= SpringKind::weft) return s;
+  }
+  return -1;
 }
 
-std::vector<Cell> formed_cells(const FabricGrid& grid, const std::vector<Eigen::Vector3d>& x) {
+Cell formed_cell(const Fabric& fabric, const Face& face, const std::vector<Eigen::Vector3d>& x) {
+  double sum[2] = {0.0, 0.0};
+  int count[2] = {0, 0};
+  for (int c = 0; c < face.corners; ++c) {
+    const int s = spring_between(fabric, face.corner[static_cast<std::size_t>(c)],
+                                 face.corner[static_cast<std::size_t>((c + 1) % face.corners)]);
+    if (s < 0) continue;
+    const Spring& spring = fabric.springs()[static_cast<std::size_t>(s)];
+    const int kind = spring.kind == SpringKind::warp ? 0 : 1;
+    sum[kind] += spring_strain(x[static_cast<std::size_t>(spring.a)], x[static_cast<std::size_t>(spring.b)],
+                               spring.rest_length);
+    ++count[kind];
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {face_area(face, x), count[0] ? sum[0] / count[0] : nan, count[1] ? sum[1] / count[1] : nan};
+}
+
+std::vector<Cell> formed_cells(const Fabric& fabric, const std::vector<Eigen::Vector3d>& x) {
   std::vector<Cell> cells;
-  const double warp_rest = grid.spacing_warp(), weft_rest = grid.spacing_weft();
-  for (int j = 0; j + 1 < grid.nodes_weft(); ++j)
-    for (int i = 0; i + 1 < grid.nodes_warp(); ++i) {
-      const auto& a = x[grid.node(i, j)];
-      const auto& b = x[grid.node(i + 1, j)];
-      const auto& c = x[grid.node(i + 1, j + 1)];
-      const auto& d = x[grid.node(i, j + 1)];
-      cells.push_back({triangle_area(a, b, c) + triangle_area(a, c, d),
-                       0.5 * (spring_strain(a, b, warp_rest) + spring_strain(d, c, warp_rest)),
-                       0.5 * (spring_strain(a, d, weft_rest) + spring_strain(b, c, weft_rest))});
-    }
+  cells.reserve(fabric.faces().size());
+  for (const Face& face : fabric.faces()) cells.push_back(formed_cell(fabric, face, x));
   return cells;
 }
 
-StrainPeak peak_of(const Model& model, const std::vector<Eigen::Vector3d>& x, Direction direction) {
+StrainPeak peak_of(const Model& model, const std::vector<Eigen::Vector3d>& x, SpringKind kind) {
   StrainPeak peak;
   peak.strain = -std::numeric_limits<double>::infinity();
-  for (const Spring& s : model.grid.springs()) {
-    if (s.direction != direction) continue;
+  for (const Spring& s : model.fabric.springs()) {
+    if (s.kind != kind) continue;
     const double strain = spring_strain(x[s.a], x[s.b], s.rest_length);
     if (strain > peak.strain)
-      peak = {strain, model.grid.i_of(s.a), model.grid.j_of(s.a), 0.5 * (x[s.a] + x[s.b])};
+      peak = {strain, model.fabric.i_of(s.a), model.fabric.j_of(s.a), 0.5 * (x[s.a] + x[s.b])};
   }
   return peak;
 }
@@ -68,7 +81,8 @@ StrainHistogram histogram_of(const std::vector<Cell>& cells) {
   if (cells.empty()) return h;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const Cell& c : cells)
-    lo = std::min({lo, c.warp_strain, c.weft_strain}), hi = std::max({hi, c.warp_strain, c.weft_strain});
+    for (const double strain : {c.warp_strain, c.weft_strain})
+      if (!std::isnan(strain)) lo = std::min(lo, strain), hi = std::max(hi, strain);
   if (!std::isfinite(lo) || !std::isfinite(hi)) return h;  // a broken state has no histogram
   const BinWidth width = bin_width(lo, hi);
   const double first = std::floor(lo / width.value());  // in widths
@@ -81,21 +95,22 @@ StrainHistogram histogram_of(const std::vector<Cell>& cells) {
     return std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, at)));
   };
   for (const Cell& c : cells) {
-    h.warp_area_m2[bin_of(c.warp_strain)] += c.area_m2;
-    h.weft_area_m2[bin_of(c.weft_strain)] += c.area_m2;
+    if (!std::isnan(c.warp_strain)) h.warp_area_m2[bin_of(c.warp_strain)] += c.area_m2;
+    if (!std::isnan(c.weft_strain)) h.weft_area_m2[bin_of(c.weft_strain)] += c.area_m2;
   }
   return h;
 }
 
-// Each cell's area split equally among its four corners; the corners on a body add up.
-double contact_area(const FabricGrid& grid, const std::vector<Cell>& cells,
+// Each face's area split equally among its corners; the corners on a body add up.
+double contact_area(const Fabric& fabric, const std::vector<Cell>& cells,
                     const std::vector<unsigned char>& contact) {
   double area = 0.0;
-  std::size_t cell = 0;
-  for (int j = 0; j + 1 < grid.nodes_weft(); ++j)
-    for (int i = 0; i + 1 < grid.nodes_warp(); ++i, ++cell)
-      for (const int k : {grid.node(i, j), grid.node(i + 1, j), grid.node(i + 1, j + 1), grid.node(i, j + 1)})
-        if (contact[static_cast<std::size_t>(k)]) area += 0.25 * cells[cell].area_m2;
+  for (std::size_t f = 0; f < cells.size(); ++f) {
+    const Face& face = fabric.faces()[f];
+    for (int c = 0; c < face.corners; ++c)
+      if (contact[static_cast<std::size_t>(face.corner[static_cast<std::size_t>(c)])])
+        area += cells[f].area_m2 / face.corners;
+  }
   return area;
 }
 
@@ -103,13 +118,13 @@ double contact_area(const FabricGrid& grid, const std::vector<Cell>& cells,
 
 FabricFigures fabric_figures(const Model& model, const std::vector<Eigen::Vector3d>& x,
                              const std::vector<unsigned char>& contact) {
-  const std::vector<Cell> cells = formed_cells(model.grid, x);
+  const std::vector<Cell> cells = formed_cells(model.fabric, x);
   FabricFigures f;
-  f.area_flat_m2 = model.grid.spec().width_m * model.grid.spec().height_m;
+  f.area_flat_m2 = model.fabric.flat_area();
   for (const Cell& c : cells) f.area_formed_m2 += c.area_m2;
-  f.contact_area_m2 = contact_area(model.grid, cells, contact);
-  f.max_warp = peak_of(model, x, Direction::warp);
-  f.max_weft = peak_of(model, x, Direction::weft);
+  f.contact_area_m2 = contact_area(model.fabric, cells, contact);
+  f.max_warp = peak_of(model, x, SpringKind::warp);
+  f.max_weft = peak_of(model, x, SpringKind::weft);
   f.histogram = histogram_of(cells);
   return f;
 }

@@ -1,5 +1,6 @@
 #include "fabform/output/result_writer.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fabform/analysis/drape_figures.hpp"
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/output/fabric_figures.hpp"
@@ -41,6 +43,40 @@ nlohmann::json figures_json(const FabricFigures& f) {
           {"strain_histogram", histogram}};
 }
 
+nlohmann::json fabric_json(const Fabric& fabric) {
+  nlohmann::json springs;
+  for (const SpringKind kind : {SpringKind::warp, SpringKind::weft, SpringKind::shear, SpringKind::bend})
+    springs[to_string(kind)] = std::count_if(fabric.springs().begin(), fabric.springs().end(),
+                                             [&](const Spring& s) { return s.kind == kind; });
+  return {{"shape", to_string(fabric.spec().shape)},
+          {"mesh", to_string(fabric.spec().mesh)},
+          {"nodes", fabric.node_count()},
+          {"faces", fabric.faces().size()},
+          {"springs", springs}};
+}
+
+// A drape test's figures; null where the state has no shadow (a position not finite).
+nlohmann::json drape_json(const RunRecord& run) {
+  const DrapeSpec& drape = run.scene.drape;
+  double support = 0.0;
+  for (const RigidBody& body : run.model.bodies)
+    if (body.name() == drape.support) support = support_area(body.mesh());
+  const double radius = run.scene.fabric.radius_m();
+  try {
+    const DrapeFigures f = drape_figures(run.model.fabric, run.state.x,
+                                         run.scene.origin_m.head<2>() + Eigen::Vector2d(radius, radius), support);
+    return {{"coefficient", f.coefficient},
+            {"shadow_area_m2", f.shadow_area_m2},
+            {"specimen_area_m2", f.specimen_area_m2},
+            {"support", drape.support.empty() ? nlohmann::json("pin") : nlohmann::json(drape.support)},
+            {"support_area_m2", f.support_area_m2},
+            {"folds", f.folds},
+            {"shadow_pieces", f.shadow_pieces}};
+  } catch (const std::invalid_argument&) {
+    return nullptr;
+  }
+}
+
 std::string result_json(const RunRecord& run) {
   const Summary& s = run.summary;
   nlohmann::json j;
@@ -67,10 +103,15 @@ std::string result_json(const RunRecord& run) {
   j["wall_seconds"] = run.wall_seconds;
   j["solve_seconds"] = s.seconds;
   j["nodes"] = run.model.node_count();
-  j["grid"] = {run.model.grid.nodes_warp(), run.model.grid.nodes_weft()};
+  j["grid"] = {run.model.fabric.nodes_warp(), run.model.fabric.nodes_weft()};
   j["contact_nodes"] = run.check.contact_nodes;
   j["max_penetration_m"] = number(run.check.max_penetration_m);
   j["figures"] = figures_json(fabric_figures(run.model, run.state.x, run.check.contact));
+  j["fabric"] = fabric_json(run.model.fabric);
+  if (run.scene.drape.on) {
+    j["drape"] = drape_json(run);
+    j["drape_coefficient"] = j["drape"].is_null() ? nlohmann::json(nullptr) : j["drape"]["coefficient"];
+  }
   j["modelled"] = run.model.modelled;
   j["materials"] = {{"warp", run.scene.warp_path}, {"weft", run.scene.weft_path}};
   nlohmann::json bodies = nlohmann::json::array();
@@ -94,24 +135,17 @@ std::string convergence_csv(const Summary& s) {
   return out.str();
 }
 
-// Quads of the grid, as vertex indices, counter-clockwise seen from +z in the flat fabric.
-std::vector<std::array<int, 4>> grid_quads(const FabricGrid& grid) {
-  std::vector<std::array<int, 4>> quads;
-  for (int j = 0; j + 1 < grid.nodes_weft(); ++j)
-    for (int i = 0; i + 1 < grid.nodes_warp(); ++i)
-      quads.push_back({grid.node(i, j), grid.node(i + 1, j), grid.node(i + 1, j + 1),
-                       grid.node(i, j + 1)});
-  return quads;
-}
-
 std::string fabric_obj(const RunRecord& run) {
   std::ostringstream out;
   out.precision(12);
   out << "# fabform " << FABFORM_VERSION << ": formed fabric of scene " << run.scene.name
       << " (metres)\n";
   for (const auto& x : run.state.x) out << "v " << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
-  for (const auto& q : grid_quads(run.model.grid))
-    out << "f " << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' ' << q[3] + 1 << '\n';
+  for (const Face& f : run.model.fabric.faces()) {
+    out << 'f';
+    for (int c = 0; c < f.corners; ++c) out << ' ' << f.corner[static_cast<std::size_t>(c)] + 1;
+    out << '\n';
+  }
   return out.str();
 }
 
@@ -136,12 +170,18 @@ std::string fabric_vtk(const RunRecord& run) {
   std::ostringstream out;
   out.precision(12);
   const auto& x = run.state.x;
-  const auto quads = grid_quads(run.model.grid);
+  const std::vector<Face>& faces = run.model.fabric.faces();
   out << "# vtk DataFile Version 3.0\nfabform " << run.scene.name << " formed fabric\nASCII\n"
       << "DATASET POLYDATA\nPOINTS " << x.size() << " double\n";
   for (const auto& p : x) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-  out << "POLYGONS " << quads.size() << ' ' << 5 * quads.size() << '\n';
-  for (const auto& q : quads) out << "4 " << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+  std::size_t indices = 0;
+  for (const Face& f : faces) indices += 1 + static_cast<std::size_t>(f.corners);
+  out << "POLYGONS " << faces.size() << ' ' << indices << '\n';
+  for (const Face& f : faces) {
+    out << f.corners;
+    for (int c = 0; c < f.corners; ++c) out << ' ' << f.corner[static_cast<std::size_t>(c)];
+    out << '\n';
+  }
   const NodeStrains strains = node_strains(run.model, x);
   out << "POINT_DATA " << x.size() << '\n';
   vtk_field(out, "strain_warp", strains.warp);

@@ -1,5 +1,6 @@
 #include "fabform/scene/model_builder.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -72,7 +73,7 @@ void add_gravity(const Scene& scene, const MaterialFile& warp, const MaterialFil
   if (!scene.gravity.on) return;
   require_support(scene, *model);
   const double density = areal_density(scene, warp, weft);
-  model->loads = gravity_loads(model->grid, density, scene.gravity.acceleration_m_s2);
+  model->loads = gravity_loads(model->fabric, density, scene.gravity.acceleration_m_s2);
   model->modelled.push_back(gravity_term(density, scene.gravity.acceleration_m_s2));
 }
 
@@ -94,22 +95,27 @@ std::vector<RigidBody> build_bodies(const Scene& scene) {
   return bodies;
 }
 
-FabricGrid build_grid(const Scene& scene) {
+Fabric build_fabric(const Scene& scene) {
   try {
-    return FabricGrid(scene.grid);
+    return Fabric(scene.fabric);
   } catch (const std::invalid_argument& error) {
-    throw InputError(scene.grid_where, error.what());
+    throw InputError(scene.fabric_where, error.what());
   }
 }
 
-std::vector<AxisMask> build_locks(const Scene& scene, const FabricGrid& grid) {
-  std::vector<AxisMask> locks(static_cast<std::size_t>(grid.node_count()), 0);
+std::string fabric_name(const Fabric& fabric) {
+  if (fabric.spec().shape == FabricSpec::Shape::rectangle)
+    return std::to_string(fabric.nodes_warp()) + " x " + std::to_string(fabric.nodes_weft()) + " grid";
+  return std::string(to_string(fabric.spec().mesh)) + " circle of " + std::to_string(fabric.node_count()) +
+         " nodes (a circle has no edges or corners)";
+}
+
+std::vector<AxisMask> build_locks(const Scene& scene, const Fabric& fabric) {
+  std::vector<AxisMask> locks(static_cast<std::size_t>(fabric.node_count()), 0);
   for (const ConstraintSpec& c : scene.constraints) {
-    const std::vector<int> nodes = select_nodes(grid, c.nodes);
+    const std::vector<int> nodes = select_nodes(fabric, c.nodes);
     if (nodes.empty())
-      throw InputError(c.where, "node set " + c.nodes_text + " selects no node of the " +
-                                    std::to_string(grid.nodes_warp()) + " x " +
-                                    std::to_string(grid.nodes_weft()) + " grid");
+      throw InputError(c.where, "node set " + c.nodes_text + " selects no node of the " + fabric_name(fabric));
     for (const int k : nodes) {
       auto& lock = locks[static_cast<std::size_t>(k)];
       lock = static_cast<AxisMask>(lock | c.axes);
@@ -118,15 +124,11 @@ std::vector<AxisMask> build_locks(const Scene& scene, const FabricGrid& grid) {
   return locks;
 }
 
-std::vector<Eigen::Vector3d> build_start(const Scene& scene, const FabricGrid& grid) {
-  std::vector<Eigen::Vector3d> start = initial_positions(grid, scene.origin_m, scene.initial);
+std::vector<Eigen::Vector3d> build_start(const Scene& scene, const Fabric& fabric) {
+  std::vector<Eigen::Vector3d> start = initial_positions(fabric, scene.origin_m, scene.initial);
   if (!within_range(start))
     throw InputError(scene.initial_where, "the fabric starts beyond 1e6 m: check origin_m and the initial shape");
   return start;
-}
-
-std::string node_name(const FabricGrid& grid, int k) {
-  return "node (" + std::to_string(grid.i_of(k)) + ", " + std::to_string(grid.j_of(k)) + ")";
 }
 
 // An outward-oriented closed mesh encloses a positive volume; a negative one means the faces
@@ -145,36 +147,89 @@ void check_clear_start(const Scene& scene, const Model& model) {
       if (s.signed_distance <= 0.0) {
         char depth[64];
         std::snprintf(depth, sizeof depth, "%.3g", -s.signed_distance);
-        throw InputError(scene.initial_where, node_name(model.grid, k) + " starts inside body '" +
+        throw InputError(scene.initial_where, model.fabric.node_name(k) + " starts inside body '" +
                                                   body.name() + "' (" + depth + " m deep)" +
                                                   orientation_hint(body));
       }
     }
-    for (const Spring& spring : model.grid.springs())
+    for (const Spring& spring : model.fabric.springs())
       if (body.segment_crosses(model.start[static_cast<std::size_t>(spring.a)],
                                model.start[static_cast<std::size_t>(spring.b)]))
         throw InputError(scene.initial_where,
-                         "the spring from " + node_name(model.grid, spring.a) + " to " +
-                             node_name(model.grid, spring.b) + " passes through body '" +
+                         "the spring from " + model.fabric.node_name(spring.a) + " to " +
+                             model.fabric.node_name(spring.b) + " passes through body '" +
                              body.name() + "'; the initial shape must clear it");
   }
+}
+
+// Seed 004's shear springs follow the fabric's bias response, read like a warp or weft table.
+void add_shear(const Scene& scene, Model* model) {
+  if (!scene.shear.on) return;
+  model->shear = read_material(scene.shear.material_path, scene.shear.material_where).table;
+  model->modelled.push_back("shear: diagonal springs (rest length the cell's diagonal) following " +
+                            scene.shear.material_path);
+}
+
+// Seed 004's bend springs resist the shortening a fold brings as much as stretching: a table
+// linear through zero in both directions, T = k·ε per width.
+void add_bending(const Scene& scene, Model* model) {
+  if (!scene.bending.on) return;
+  const double k = scene.bending.stiffness_N_m;
+  model->bend = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "bending");
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "bending: skip-one bend springs, linear in tension and compression, %.6g N/m per width", k);
+  model->modelled.push_back(text);
+}
+
+// A drape test's support must lie under the specimen: every point of the named body, seen from
+// above, within the placed circle.
+void check_drape_support(const Scene& scene, const Model& model) {
+  if (!scene.drape.on || scene.drape.support.empty()) return;
+  const auto body = std::find_if(model.bodies.begin(), model.bodies.end(),
+                                 [&](const RigidBody& b) { return b.name() == scene.drape.support; });
+  if (body == model.bodies.end())
+    throw InputError(scene.drape.support_where, "no body named '" + scene.drape.support + "' in the scene");
+  const double radius = scene.fabric.radius_m();
+  const Eigen::Vector2d centre = scene.origin_m.head<2>() + Eigen::Vector2d(radius, radius);
+  double reach = 0.0;
+  for (const Eigen::Vector3d& v : body->mesh().vertices) reach = std::max(reach, (v.head<2>() - centre).norm());
+  if (reach >= radius) {
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "the %.4g m circle does not cover body '%s': the body reaches %.4g m from the circle's "
+                  "centre, the circle %.4g m",
+                  2 * radius, body->name().c_str(), reach, radius);
+    throw InputError(scene.drape.support_where, text);
+  }
+}
+
+std::string stretch_term(const Fabric& fabric) {
+  std::string mesh = fabric.spec().shape == FabricSpec::Shape::rectangle
+                         ? "rectangle"
+                         : std::string(to_string(fabric.spec().mesh)) + " circle";
+  return "stretch: warp and weft springs of a " + mesh + " of " + std::to_string(fabric.node_count()) +
+         " nodes, tension-only piecewise-linear tables";
 }
 
 }  // namespace
 
 Model build_model(const Scene& scene) {
-  FabricGrid grid = build_grid(scene);
+  Fabric fabric = build_fabric(scene);
   const MaterialFile warp = read_material(scene.warp_path, scene.warp_where);
   const MaterialFile weft = read_material(scene.weft_path, scene.weft_where);
-  Model model{grid,
+  Model model{fabric,
               warp.table,
               weft.table,
-              build_locks(scene, grid),
+              build_locks(scene, fabric),
               build_bodies(scene),
-              build_start(scene, grid),
+              build_start(scene, fabric),
               {},  // loads: add_gravity's, when the scene has [gravity]
-              {"stretch: warp and weft springs, tension-only piecewise-linear tables"}};
+              {stretch_term(fabric)}};
+  add_shear(scene, &model);
+  add_bending(scene, &model);
   add_gravity(scene, warp, weft, &model);
+  check_drape_support(scene, model);
   check_clear_start(scene, model);
   return model;
 }

@@ -90,20 +90,90 @@ std::string read_scene_name(TableReader& r, const std::string& fallback) {
   return name;
 }
 
-void read_fabric(TableReader r, Scene* scene) {
+void check_size(TableReader& r, const std::string& key, double size) {
+  if (!(size > 0.0)) r.fail(key, "must be positive");
+  if (size > kMaxLength_m) r.fail(key, "must be at most " + number_text(kMaxLength_m) + " m");
+}
+
+void read_rectangle(TableReader& r, Scene* scene) {
   const Eigen::Vector2d size = r.vector<2>("size_m", Eigen::Vector2d::Zero(), true);
   if (!(size.array() > 0.0).all()) r.fail("size_m", "both sides must be positive");
   if (size.maxCoeff() > kMaxLength_m) r.fail("size_m", "must be at most " + number_text(kMaxLength_m) + " m a side");
   const auto [n, m] = r.integer_pair("divisions", true);
-  scene->grid = {size.x(), size.y(), checked_int(r, "divisions", n, 1, 10000),
-                 checked_int(r, "divisions", m, 1, 10000)};
-  scene->grid_where = r.locate_key("divisions");
+  FabricSpec& f = scene->fabric;
+  f.width_m = size.x(), f.height_m = size.y();
+  f.divisions_warp = checked_int(r, "divisions", n, 1, 10000);
+  f.divisions_weft = checked_int(r, "divisions", m, 1, 10000);
+  scene->fabric_where = r.locate_key("divisions");
+}
+
+// Seed 000's circle: lattice points inside it (quadrangular, triangular) or rings on spokes.
+void read_circle(TableReader& r, Scene* scene) {
+  FabricSpec& f = scene->fabric;
+  f.shape = FabricSpec::Shape::circle;
+  f.width_m = f.height_m = r.number("diameter_m", 0.0, true);
+  check_size(r, "diameter_m", f.width_m);
+  const std::string mesh = r.text("mesh", "", true);
+  if (mesh == "quadrangular" || mesh == "triangular") {
+    f.mesh = mesh == "triangular" ? FabricSpec::Mesh::triangular : FabricSpec::Mesh::quadrangular;
+    f.divisions_warp = f.divisions_weft = checked_int(r, "divisions", r.integer("divisions", 0, true), 3, 10000);
+    scene->fabric_where = r.locate_key("divisions");
+  } else if (mesh == "arc") {
+    f.mesh = FabricSpec::Mesh::arc;
+    f.rings = checked_int(r, "rings", r.integer("rings", 0, true), 1, 5000);
+    f.spokes = checked_int(r, "spokes", r.integer("spokes", 0, true), 3, 10000);
+    scene->fabric_where = r.locate_key("rings");
+  } else {
+    r.fail("mesh", "must be one of quadrangular, triangular, arc (got '" + shown(mesh) + "')");
+  }
+}
+
+void read_fabric(TableReader& r, Scene* scene) {
+  const std::string shape = r.text("shape", "rectangle");
+  if (shape == "rectangle") read_rectangle(r, scene);
+  else if (shape == "circle") read_circle(r, scene);
+  else r.fail("shape", "must be rectangle or circle (got '" + shown(shape) + "')");
   scene->origin_m = r.vector<3>("origin_m", Eigen::Vector3d::Zero());
   scene->warp_path = resolve(scene->path, plain_text(r, "warp", "", true));
   scene->warp_where = r.locate_key("warp");
   scene->weft_path = resolve(scene->path, plain_text(r, "weft", "", true));
   scene->weft_where = r.locate_key("weft");
-  r.reject_unknown({"size_m", "divisions", "origin_m", "warp", "weft"});
+  if (shape == "rectangle")
+    r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft"});
+  else
+    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "rings", "spokes", "origin_m", "warp", "weft"});
+}
+
+void read_shear(TableReader r, Scene* scene) {
+  ShearSpec& s = scene->shear;
+  s.on = true;
+  s.where = r.where();
+  s.material_path = resolve(scene->path, plain_text(r, "material", "", true));
+  s.material_where = r.locate_key("material");
+  scene->fabric.shear_springs = true;
+  r.reject_unknown({"material"});
+}
+
+void read_bending(TableReader r, Scene* scene) {
+  BendingSpec& b = scene->bending;
+  b.on = true;
+  b.where = r.where();
+  b.stiffness_N_m = r.number("stiffness_N_m", 0.0, true);
+  if (!(b.stiffness_N_m > 0.0 && b.stiffness_N_m <= 1e9))
+    r.fail("stiffness_N_m", "must be in (0, 1e9] N/m");
+  scene->fabric.bend_springs = true;
+  r.reject_unknown({"stiffness_N_m"});
+}
+
+void read_drape(TableReader r, Scene* scene) {
+  DrapeSpec& d = scene->drape;
+  d.on = true;
+  d.where = r.where();
+  d.support = plain_text(r, "support", "");
+  d.support_where = r.locate_key("support");
+  if (scene->fabric.shape != FabricSpec::Shape::circle)
+    throw InputError(d.where, "a drape test needs a circular fabric ([fabric] shape = \"circle\")");
+  r.reject_unknown({"support"});
 }
 
 BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t index) {
@@ -138,15 +208,22 @@ NodeSetSpec read_node_index(TableReader& r, std::string* text) {
 // "A point of the flat fabric", from its lower-left corner: a point off the fabric is usually
 // written in scene coordinates (origin_m added) or in the wrong unit, and would silently pick
 // whichever edge node is nearest.
-NodeSetSpec read_nearest(TableReader& r, const GridSpec& grid, std::string* text) {
+NodeSetSpec read_nearest(TableReader& r, const FabricSpec& fabric, std::string* text) {
   NodeSetSpec spec;
   spec.kind = NodeSetSpec::Kind::nearest;
   spec.point = r.vector<2>("nearest_m", Eigen::Vector2d::Zero(), true);
   const Eigen::Vector2d& p = spec.point;
-  if (!(p.x() >= 0.0 && p.x() <= grid.width_m && p.y() >= 0.0 && p.y() <= grid.height_m))
-    r.fail("nearest_m", "must lie on the fabric: x from 0 to " + number_text(grid.width_m) +
-                            ", y from 0 to " + number_text(grid.height_m) +
+  if (fabric.shape == FabricSpec::Shape::circle) {
+    const double radius = fabric.radius_m();
+    if (!((p - Eigen::Vector2d(radius, radius)).norm() <= radius))
+      r.fail("nearest_m", "must lie on the fabric: within " + number_text(radius) + " m of its centre [" +
+                              number_text(radius) + ", " + number_text(radius) +
+                              "] (points are from the lower-left corner of the circle's bounding square)");
+  } else if (!(p.x() >= 0.0 && p.x() <= fabric.width_m && p.y() >= 0.0 && p.y() <= fabric.height_m)) {
+    r.fail("nearest_m", "must lie on the fabric: x from 0 to " + number_text(fabric.width_m) +
+                            ", y from 0 to " + number_text(fabric.height_m) +
                             " m from its lower-left corner");
+  }
   *text = "nearest_m";
   return spec;
 }
@@ -167,14 +244,14 @@ NodeSetSpec read_box(TableReader& r, std::string* text) {
   return spec;
 }
 
-NodeSetSpec read_selector(TableReader& r, const GridSpec& grid, std::string* text) {
+NodeSetSpec read_selector(TableReader& r, const FabricSpec& fabric, std::string* text) {
   static const std::vector<std::string> selectors = {"nodes", "node", "nearest_m", "box_m"};
   int given = 0;
   for (const auto& s : selectors) given += r.has(s) ? 1 : 0;
   // None or several: the constraint as a whole is wrong, not one of its keys.
   if (given != 1) throw InputError(r.where(), "give exactly one of nodes, node, nearest_m, box_m");
   if (r.has("node")) return read_node_index(r, text);
-  if (r.has("nearest_m")) return read_nearest(r, grid, text);
+  if (r.has("nearest_m")) return read_nearest(r, fabric, text);
   if (r.has("box_m")) return read_box(r, text);
   NodeSetSpec spec;
   *text = r.text("nodes", "");
@@ -185,10 +262,10 @@ NodeSetSpec read_selector(TableReader& r, const GridSpec& grid, std::string* tex
   return spec;
 }
 
-ConstraintSpec read_constraint(TableReader r, const GridSpec& grid) {
+ConstraintSpec read_constraint(TableReader r, const FabricSpec& fabric) {
   ConstraintSpec constraint;
   constraint.where = r.where();
-  constraint.nodes = read_selector(r, grid, &constraint.nodes_text);
+  constraint.nodes = read_selector(r, fabric, &constraint.nodes_text);
   const std::string axes = r.text("axes", "xyz");
   if (!parse_axes(axes, &constraint.axes))
     r.fail("axes", "must name each of x, y, z at most once, e.g. \"xyz\" or \"xy\"");
@@ -334,15 +411,23 @@ Scene read_scene(const toml::table& root, const std::string& path,
   scene.name = read_scene_name(info, fs::path(path).stem().string());
   scene.description = info.text("description", "");
   info.reject_unknown({"name", "description"});
-  read_fabric(r.table("fabric", true), &scene);
+  TableReader fabric = r.table("fabric", true);
+  read_fabric(fabric, &scene);
   const auto bodies = r.tables("body");
   for (std::size_t b = 0; b < bodies.size(); ++b) scene.bodies.push_back(read_body(bodies[b], path, b));
-  for (auto& c : r.tables("constraint")) scene.constraints.push_back(read_constraint(c, scene.grid));
+  for (auto& c : r.tables("constraint")) scene.constraints.push_back(read_constraint(c, scene.fabric));
   if (r.has("gravity")) read_gravity(r.table("gravity", false), &scene);
+  if (r.has("shear")) read_shear(r.table("shear", false), &scene);
+  if (r.has("bending")) read_bending(r.table("bending", false), &scene);
+  if (r.has("drape")) read_drape(r.table("drape", false), &scene);
+  if (scene.fabric.mesh == FabricSpec::Mesh::triangular && !scene.shear.on)
+    fabric.fail("mesh", "a triangular mesh has diagonal springs: name their bias table in a [shear] table "
+                        "(material = FILE)");
   read_initial(r.table("initial", false), &scene);
   read_solver(r.table("solver", false), &scene);
   read_output(r.table("output", false), &scene);
-  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "initial", "solver", "output"});
+  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "drape",
+                    "initial", "solver", "output"});
   return scene;
 }
 

@@ -32,7 +32,7 @@ std::string DynamicOptions::invalid_reason(std::string* field) const {
 }
 
 std::vector<double> node_masses(const Model& model, double areal_density_kg_m2) {
-  std::vector<double> mass = model.grid.node_areas();
+  std::vector<double> mass = model.fabric.node_areas();
   for (double& m : mass) m *= areal_density_kg_m2;
   return mass;
 }
@@ -53,7 +53,7 @@ double steepest_slope(const TensionTable& table) {
 }
 
 double spring_stiffness_bound(const Model& model, const Spring& s) {
-  return s.width * steepest_slope(model.table(s.direction)) / s.rest_length;
+  return s.width * steepest_slope(model.table(s.kind)) / s.rest_length;
 }
 
 }  // namespace
@@ -61,7 +61,7 @@ double spring_stiffness_bound(const Model& model, const Spring& s) {
 TimeStep stable_time_step(const Model& model, const std::vector<double>& masses, double fraction) {
   std::vector<double> stiffness(masses.size(), 0.0);
   double stiffest = 0.0;
-  for (const Spring& s : model.grid.springs()) {
+  for (const Spring& s : model.fabric.springs()) {
     const double k = spring_stiffness_bound(model, s);
     stiffness[static_cast<std::size_t>(s.a)] += k;
     stiffness[static_cast<std::size_t>(s.b)] += k;
@@ -127,7 +127,7 @@ class Dynamics {
 
  private:
   static double default_damping(const Model& model) {
-    const int divisions = std::max(model.grid.nodes_warp(), model.grid.nodes_weft()) - 1;
+    const int divisions = model.fabric.divisions_across();
     return std::min(0.5, 4.0 / std::max(divisions, 1));
   }
 
@@ -153,7 +153,7 @@ class Dynamics {
   void limit_stretch() {
     const double ratio = 1.0 + options_.stretch_limit;
     for (const int index : stretch_order_) {
-      const Spring& s = model_.grid.springs()[static_cast<std::size_t>(index)];
+      const Spring& s = model_.fabric.springs()[static_cast<std::size_t>(index)];
       const auto a = static_cast<std::size_t>(s.a), b = static_cast<std::size_t>(s.b);
       const Eigen::Vector3d d = state_.x[b] - state_.x[a];
       const double excess = d.norm() - ratio * s.rest_length;
@@ -175,19 +175,18 @@ class Dynamics {
     for (int k = 0; k < n; ++k)
       if (model_.locks[static_cast<std::size_t>(k)] != 0) hops_[static_cast<std::size_t>(k)] = 0, queue.push_back(k);
     for (std::size_t head = 0; head < queue.size(); ++head)
-      for (const int spring : model_.grid.springs_at(queue[head])) {
-        if (spring < 0) continue;
-        const Spring& s = model_.grid.springs()[static_cast<std::size_t>(spring)];
+      for (const int spring : model_.fabric.springs_at(queue[head])) {
+        const Spring& s = model_.fabric.springs()[static_cast<std::size_t>(spring)];
         const int other = s.a == queue[head] ? s.b : s.a;
         int& hops = hops_[static_cast<std::size_t>(other)];
         if (hops > hops_[static_cast<std::size_t>(queue[head])] + 1)
           hops = hops_[static_cast<std::size_t>(queue[head])] + 1, queue.push_back(other);
       }
     const auto level = [&](int index) {
-      const Spring& s = model_.grid.springs()[static_cast<std::size_t>(index)];
+      const Spring& s = model_.fabric.springs()[static_cast<std::size_t>(index)];
       return std::min(hops_[static_cast<std::size_t>(s.a)], hops_[static_cast<std::size_t>(s.b)]);
     };
-    stretch_order_.resize(model_.grid.springs().size());
+    stretch_order_.resize(model_.fabric.springs().size());
     for (std::size_t i = 0; i < stretch_order_.size(); ++i) stretch_order_[i] = static_cast<int>(i);
     std::stable_sort(stretch_order_.begin(), stretch_order_.end(),
                      [&](int p, int q) { return level(p) < level(q); });

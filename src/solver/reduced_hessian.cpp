@@ -36,15 +36,15 @@ Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
                                             const std::vector<Eigen::Vector3d>& x,
                                             const FreeDirections& directions) {
   Triplets triplets;
-  triplets.reserve(model.grid.springs().size() * 21 + static_cast<std::size_t>(directions.unknowns()));
+  triplets.reserve(model.fabric.springs().size() * 21 + static_cast<std::size_t>(directions.unknowns()));
   for (int u = 0; u < directions.unknowns(); ++u) triplets.emplace_back(u, u, 0.0);
-  const std::vector<Spring>& springs = model.grid.springs();
+  const std::vector<Spring>& springs = model.fabric.springs();
   std::vector<Eigen::Matrix3d> stiffness(springs.size());
 #pragma omp parallel for schedule(static) if (springs.size() >= kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(springs.size()); ++i) {
     const Spring& s = springs[static_cast<std::size_t>(i)];
     stiffness[static_cast<std::size_t>(i)] = projected_spring_stiffness(
-        x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)], s, model.table(s.direction));
+        x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)], s, model.table(s.kind));
   }
   for (std::size_t i = 0; i < springs.size(); ++i)
     add_spring(directions, springs[i].a, springs[i].b, stiffness[i], &triplets);

@@ -42,15 +42,14 @@ class Relaxation {
         step_attempts_(static_cast<int>(
             std::ceil(std::log(1.0 / options.min_step_fraction) / std::log(options.C)))) {}
 
-  // Checkerboard order: a node's springs reach only nodes of the other colour, so the nodes of
-  // one colour relax independently of each other, in parallel, with the same result for any
-  // thread count.
+  // Colour by colour (the checkerboard for warp and weft springs): a node's springs reach only
+  // nodes of other colours, so the nodes of one colour relax independently of each other, in
+  // parallel, with the same result for any thread count.
   void sweep() {
-    const FabricGrid& grid = model_.grid;
-    for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 256) if (grid.node_count() >= kMinParallelItems)
-      for (int k = 0; k < grid.node_count(); ++k)
-        if ((grid.i_of(k) + grid.j_of(k)) % 2 == colour) relax_node(k);
+    for (const std::vector<int>& nodes : model_.fabric.colours()) {
+      const auto count = static_cast<std::ptrdiff_t>(nodes.size());
+#pragma omp parallel for schedule(dynamic, 256) if (count >= kMinParallelItems / 2)
+      for (std::ptrdiff_t k = 0; k < count; ++k) relax_node(nodes[static_cast<std::size_t>(k)]);
     }
   }
 
@@ -107,8 +106,8 @@ class Relaxation {
     if (deformation > 0.0) return deformation / options_.C;
     double rest = 0.0;
     int count = 0;
-    for (const int s : model_.grid.springs_at(k))
-      if (s >= 0) rest += model_.grid.springs()[static_cast<std::size_t>(s)].rest_length, ++count;
+    for (const int s : model_.fabric.springs_at(k))
+      rest += model_.fabric.springs()[static_cast<std::size_t>(s)].rest_length, ++count;
     return rest / std::max(count, 1) / options_.C;
   }
 

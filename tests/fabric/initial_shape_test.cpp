@@ -23,13 +23,13 @@ InitialShape shape_of(Kind kind, double height = 0.0) {
 }
 
 // Even divisions, so there is a centre node at (W/2, H/2).
-const GridSpec kSpec{0.4, 0.3, 8, 6};
+const FabricSpec kSpec{0.4, 0.3, 8, 6};
 const Eigen::Vector3d kOrigin(0.25, -0.5, 1.2);
 // Coordinates are sums of numbers of order 1 m: a few ulps of that.
 const double kTol = 8 * kEps * 2.0;
 
 TEST(InitialShape, FlatIsTheRestGridAtTheOrigin) {
-  const FabricGrid grid(kSpec);
+  const Fabric grid(kSpec);
   const auto x = initial_positions(grid, kOrigin, shape_of(Kind::flat));
   ASSERT_EQ(x.size(), static_cast<std::size_t>(grid.node_count()));
   for (int k = 0; k < grid.node_count(); ++k)
@@ -40,7 +40,7 @@ TEST(InitialShape, FlatIsTheRestGridAtTheOrigin) {
 }
 
 TEST(InitialShape, LiftRaisesOnlyInteriorNodes) {
-  const FabricGrid grid(kSpec);
+  const Fabric grid(kSpec);
   for (const double h : {0.05, -0.02}) {
     const auto x = initial_positions(grid, kOrigin, shape_of(Kind::lift, h));
     for (int k = 0; k < grid.node_count(); ++k) {
@@ -54,7 +54,7 @@ TEST(InitialShape, LiftRaisesOnlyInteriorNodes) {
 }
 
 TEST(InitialShape, BumpIsZeroOnPerimeterAndPeaksAtCentre) {
-  const FabricGrid grid(kSpec);
+  const Fabric grid(kSpec);
   const double h = 0.08;
   const auto x = initial_positions(grid, kOrigin, shape_of(Kind::bump, h));
   const int centre = grid.node(4, 3);
@@ -94,7 +94,7 @@ class InitialShapeWrap : public ::testing::TestWithParam<WrapCase> {};
 
 TEST_P(InitialShapeWrap, OnCylinderWithWeftAlongZ) {
   const WrapCase c = GetParam();
-  const FabricGrid grid(kSpec);
+  const Fabric grid(kSpec);
   InitialShape shape = shape_of(Kind::wrap);
   shape.radius_m = c.radius;
   shape.facing_deg = c.facing_deg;

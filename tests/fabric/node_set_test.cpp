@@ -16,10 +16,10 @@ namespace {
 using Kind = NodeSetSpec::Kind;
 
 // 6 × 4 nodes over 0.5 m × 0.3 m: spacing 0.1 m both ways.
-FabricGrid test_grid() { return FabricGrid(GridSpec{0.5, 0.3, 5, 3}); }
+Fabric test_grid() { return Fabric(FabricSpec{0.5, 0.3, 5, 3}); }
 
 // Brute force: every node for which the predicate on (i, j) holds, in increasing order.
-std::vector<int> nodes_where(const FabricGrid& grid, const std::function<bool(int, int)>& pred) {
+std::vector<int> nodes_where(const Fabric& grid, const std::function<bool(int, int)>& pred) {
   std::vector<int> nodes;
   for (int k = 0; k < grid.node_count(); ++k)
     if (pred(grid.i_of(k), grid.j_of(k))) nodes.push_back(k);
@@ -33,8 +33,8 @@ NodeSetSpec spec_of(Kind kind) {
 }
 
 TEST(NodeSet, NamedSetsMatchBruteForce) {
-  for (const GridSpec& g : {GridSpec{0.5, 0.3, 5, 3}, GridSpec{1.0, 1.0, 1, 1}, GridSpec{0.2, 0.7, 1, 6}}) {
-    const FabricGrid grid(g);
+  for (const FabricSpec& g : {FabricSpec{0.5, 0.3, 5, 3}, FabricSpec{1.0, 1.0, 1, 1}, FabricSpec{0.2, 0.7, 1, 6}}) {
+    const Fabric grid(g);
     const int li = grid.nodes_warp() - 1, lj = grid.nodes_weft() - 1;
     struct Named {
       Kind kind;
@@ -59,7 +59,7 @@ TEST(NodeSet, NamedSetsMatchBruteForce) {
 }
 
 TEST(NodeSet, Counts) {
-  const FabricGrid grid = test_grid();  // 6 × 4
+  const Fabric grid = test_grid();  // 6 × 4
   EXPECT_EQ(select_nodes(grid, spec_of(Kind::perimeter)).size(), 2u * 6 + 2u * 4 - 4);
   EXPECT_EQ(select_nodes(grid, spec_of(Kind::edge_left)).size(), 4u);
   EXPECT_EQ(select_nodes(grid, spec_of(Kind::edge_bottom)).size(), 6u);
@@ -68,7 +68,7 @@ TEST(NodeSet, Counts) {
 }
 
 TEST(NodeSet, IndexInAndOutOfRange) {
-  const FabricGrid grid = test_grid();
+  const Fabric grid = test_grid();
   NodeSetSpec spec = spec_of(Kind::index);
   for (int j = 0; j < grid.nodes_weft(); ++j)
     for (int i = 0; i < grid.nodes_warp(); ++i) {
@@ -86,7 +86,7 @@ TEST(NodeSet, IndexInAndOutOfRange) {
 }
 
 TEST(NodeSet, NearestMatchesBruteForce) {
-  const FabricGrid grid = test_grid();
+  const Fabric grid = test_grid();
   std::mt19937 rng(7);
   // Points over and well beyond the fabric (0.5 × 0.3 m).
   std::uniform_real_distribution<double> x(-1.0, 1.5), y(-1.0, 1.3);
@@ -111,7 +111,7 @@ TEST(NodeSet, NearestMatchesBruteForce) {
 }
 
 TEST(NodeSet, BoxMatchesBruteForceAndIsInclusive) {
-  const FabricGrid grid = test_grid();
+  const Fabric grid = test_grid();
   NodeSetSpec spec = spec_of(Kind::box);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> x(-0.2, 0.7), y(-0.2, 0.5);
@@ -137,7 +137,7 @@ TEST(NodeSet, BoxMatchesBruteForceAndIsInclusive) {
 }
 
 TEST(NodeSet, BoxSelectingNothingIsEmpty) {
-  const FabricGrid grid = test_grid();
+  const Fabric grid = test_grid();
   NodeSetSpec spec = spec_of(Kind::box);
   const std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> boxes = {
       {{1.0, 1.0}, {2.0, 2.0}},      // beyond the fabric

@@ -69,7 +69,7 @@ TEST_P(SpringDerivatives, ForceAndStiffnessMatchFiniteDifferences) {
   for (const TableCase& tc : tables()) {
     SCOPED_TRACE(tc.label);
     const TensionTable& table = tc.table;
-    const Spring spring{0, 1, rest, 0.37 * rest, Direction::warp};
+    const Spring spring{0, 1, rest, 0.37 * rest, SpringKind::warp};
     for (const auto& [lo, hi] : strain_bands(table)) {
       if (lo < -0.95 || hi <= lo) continue;  // a band that would fold the spring through itself
       for (int sample = 0; sample < 60; ++sample) {
@@ -113,7 +113,7 @@ TEST_P(SpringDerivatives, ForceAndStiffnessMatchFiniteDifferences) {
         EXPECT_LE((stiffness - stiffness.transpose()).cwiseAbs().maxCoeff(), 1e-12 * k_scale);
 
         // Newton's third law: the force on b is −force; the energy only depends on xb − xa.
-        EXPECT_LE((spring_force_on_a(xb, xa, Spring{1, 0, rest, spring.width, Direction::warp}, table) + force).norm(),
+        EXPECT_LE((spring_force_on_a(xb, xa, Spring{1, 0, rest, spring.width, SpringKind::warp}, table) + force).norm(),
                   1e-12 * (force.norm() + 1e-300));
         ++checked;
       }
@@ -126,7 +126,7 @@ INSTANTIATE_TEST_SUITE_P(RestLengths, SpringDerivatives, ::testing::Values(1e-3,
 
 TEST(Spring, ForceDirectionAndMagnitude) {
   const TensionTable table({{0.0, 0.0}, {0.5, 10.0}}, "linear");  // T = 20 ε
-  const Spring spring{0, 1, 0.2, 0.05, Direction::weft};
+  const Spring spring{0, 1, 0.2, 0.05, SpringKind::weft};
   const Eigen::Vector3d xa(1.0, 2.0, 3.0);
   const Eigen::Vector3d xb = xa + Eigen::Vector3d(0.0, 0.3, 0.0);  // ε = 0.5, T = 10 N/m
   const Eigen::Vector3d f = spring_force_on_a(xa, xb, spring, table);
@@ -146,7 +146,7 @@ TEST(Spring, ForceDirectionAndMagnitude) {
 
 TEST(Spring, SlackSpringIsInert) {
   const TensionTable table = read_material_table(test::source_path("materials/ivory-rib-knit_warp.csv"));
-  const Spring spring{0, 1, 0.01, 0.01, Direction::warp};
+  const Spring spring{0, 1, 0.01, 0.01, SpringKind::warp};
   const Eigen::Vector3d xa(0.0, 0.0, 0.0), xb(0.004, -0.003, 0.0);  // ℓ = 0.005: ε = −0.5
   EXPECT_EQ(spring_force_on_a(xa, xb, spring, table), Eigen::Vector3d::Zero());
   EXPECT_EQ(spring_stiffness(xa, xb, spring, table), Eigen::Matrix3d::Zero());
@@ -157,7 +157,7 @@ TEST(Spring, CoincidentNodesGiveZeroForceAndNoNaN) {
   for (const TableCase& tc : tables()) {
     SCOPED_TRACE(tc.label);
     for (const double rest : {1e-3, 1.0}) {
-      const Spring spring{0, 1, rest, rest, Direction::warp};
+      const Spring spring{0, 1, rest, rest, SpringKind::warp};
       for (const Eigen::Vector3d& x : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.3, -1.2, 7.0)}) {
         EXPECT_EQ(spring_force_on_a(x, x, spring, tc.table), Eigen::Vector3d::Zero());
         EXPECT_TRUE(spring_stiffness(x, x, spring, tc.table).allFinite());
@@ -171,7 +171,7 @@ TEST(Spring, CoincidentNodesGiveZeroForceAndNoNaN) {
 TEST(Spring, NearlyCoincidentNodesStayFinite) {
   // Compression at ε ≈ −1 with the first segment extended: T = −6 + 32.5·(−0.8) = −32 N/m.
   const TensionTable table({{-0.2, -6.0}, {0.0, 0.5}, {0.15, 9.0}}, "synthetic");
-  const Spring spring{0, 1, 1e-3, 1e-3, Direction::warp};
+  const Spring spring{0, 1, 1e-3, 1e-3, SpringKind::warp};
   const Eigen::Vector3d xa = Eigen::Vector3d::Zero();  // at the origin, so xa + gap ≠ xa
   // 1e-150 apart: the direction is defined and w·T/ℓ is large (3e148) but finite; the force
   // pushes a away from b (−x). 1e-300 and 1e-320 apart: |d|² underflows, so the nodes may

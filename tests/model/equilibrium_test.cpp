@@ -45,7 +45,7 @@ TEST(UnbalancedForce, LockedNodeOnASlopeIsBalancedByTheSurface) {
 }
 
 Model two_by_two_over_sphere(double z) {
-  FabricGrid grid({0.02, 0.02, 2, 2});
+  Fabric grid({0.02, 0.02, 2, 2});
   std::vector<Eigen::Vector3d> x(9);
   for (int k = 0; k < 9; ++k) x[static_cast<std::size_t>(k)] = grid.rest_position(k) - Eigen::Vector3d(0, 0, 5e-4);
   x[4].z() = z;

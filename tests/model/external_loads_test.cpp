@@ -14,7 +14,7 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 TEST(GravityLoads, TheWholeFabricWeighsDensityTimesAreaTimesG) {
-  const FabricGrid grid({0.3, 0.2, 6, 4});
+  const Fabric grid({0.3, 0.2, 6, 4});
   const double density = 0.324, g = 9.81;
   const std::vector<Eigen::Vector3d> loads = gravity_loads(grid, density, g);
   ASSERT_EQ(loads.size(), static_cast<std::size_t>(grid.node_count()));
@@ -33,7 +33,7 @@ TEST(GravityLoads, TheWholeFabricWeighsDensityTimesAreaTimesG) {
 // The potential of constant loads is linear: its finite differences are exact up to rounding,
 // and equal minus the load at each node and axis.
 TEST(LoadEnergy, ItsGradientIsMinusTheLoads) {
-  const FabricGrid grid({0.1, 0.1, 3, 3});
+  const Fabric grid({0.1, 0.1, 3, 3});
   const std::vector<Eigen::Vector3d> loads = gravity_loads(grid, 0.2, 9.81);
   std::mt19937 rng(7u);
   std::uniform_real_distribution<double> jitter(-0.02, 0.02);
@@ -51,7 +51,7 @@ TEST(LoadEnergy, ItsGradientIsMinusTheLoads) {
 }
 
 TEST(LoadEnergy, ItsChangeIsTheDifferenceOfItsValues) {
-  const FabricGrid grid({0.1, 0.1, 3, 3});
+  const Fabric grid({0.1, 0.1, 3, 3});
   const std::vector<Eigen::Vector3d> loads = gravity_loads(grid, 0.2, 9.81);
   std::vector<Eigen::Vector3d> from, to;
   for (int k = 0; k < grid.node_count(); ++k) {
@@ -66,7 +66,7 @@ TEST(LoadEnergy, ItsChangeIsTheDifferenceOfItsValues) {
 
 // e must be well below a node's weight, or a run may stop before the weight shows.
 TEST(LoadToleranceWarning, WhenTheToleranceIsNotWellBelowTheLightestNodesWeight) {
-  const FabricGrid grid({0.1, 0.1, 40, 40});  // seed 003's mold grid
+  const Fabric grid({0.1, 0.1, 40, 40});  // seed 003's mold grid
   const std::vector<Eigen::Vector3d> loads = gravity_loads(grid, 0.204, kStandardGravity_m_s2);
   const double corner = 0.204 * 0.0025 * 0.0025 / 4 * kStandardGravity_m_s2;  // ~3.1e-6 N
   const std::string warning = load_tolerance_warning(loads, 1e-3);

@@ -17,7 +17,7 @@ namespace fabform {
 namespace {
 
 // A free fabric of a shipped material, weighed with its density.
-Model weighed_fabric(const FabricGrid& grid, const std::string& fabric, double density_kg_m2) {
+Model weighed_fabric(const Fabric& grid, const std::string& fabric, double density_kg_m2) {
   return Model{grid,
                read_material_table(test::source_path("materials/" + fabric + "_warp.csv")),
                read_material_table(test::source_path("materials/" + fabric + "_weft.csv")),
@@ -29,7 +29,7 @@ Model weighed_fabric(const FabricGrid& grid, const std::string& fabric, double d
 }
 
 TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
-  const FabricGrid grid({0.1, 0.08, 6, 4});
+  const Fabric grid({0.1, 0.08, 6, 4});
   const Model model = weighed_fabric(grid, "white-swim-solid", 0.204);
   // Stretched by 5–15 %, away from the tables' kinks at 0 strain, and crumpled out of plane.
   std::mt19937 rng(11u);
@@ -55,7 +55,7 @@ TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
 
 // Moving one node changes Π by node_energy_change: the same number relax judges its steps by.
 TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWhole) {
-  const FabricGrid grid({0.1, 0.08, 5, 4});
+  const Fabric grid({0.1, 0.08, 5, 4});
   const Model model = weighed_fabric(grid, "ivory-rib-knit", 0.276);
   std::vector<Eigen::Vector3d> x;
   for (int k = 0; k < grid.node_count(); ++k) x.push_back(1.08 * grid.rest_position(k));
@@ -70,7 +70,7 @@ TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWhole) {
 }
 
 TEST(PotentialEnergy, WithoutLoadsItIsTheStretchEnergy) {
-  const FabricGrid grid({0.1, 0.1, 2, 2});
+  const Fabric grid({0.1, 0.1, 2, 2});
   const TensionTable table({{0.0, 0.0}, {1.0, 100.0}}, "linear");
   Model model{grid, table, table, std::vector<AxisMask>(9, 0), {}, {}};
   std::vector<Eigen::Vector3d> x;

@@ -57,7 +57,7 @@ std::vector<Sample> samples(double rest, unsigned seed) {
   return out;
 }
 
-const Spring kSpring{0, 1, 2.5e-3, 2.5e-3, Direction::warp};
+const Spring kSpring{0, 1, 2.5e-3, 2.5e-3, SpringKind::warp};
 
 double energy(const Vector6d& x, const TensionTable& t) {
   return spring_energy(x.head<3>(), x.tail<3>(), kSpring, t);
@@ -127,7 +127,7 @@ TEST(SpringEnergy, ProjectedHessianIsPositiveSemiDefinite) {
 // Summing every spring's gradient over a randomly deformed grid gives, at every node, minus
 // the force node_force computes spring by spring (the same terms, so to a few roundings).
 TEST(SpringEnergy, MinusTotalGradientIsTheNodeForce) {
-  FabricGrid grid({0.1, 0.08, 7, 5});
+  Fabric grid({0.1, 0.08, 7, 5});
   const TensionTable table = tables()[0];
   const Model model{grid, table, tables()[1], std::vector<AxisMask>(48, 0), {}, {}};
   std::mt19937 rng(3u);
@@ -138,7 +138,7 @@ TEST(SpringEnergy, MinusTotalGradientIsTheNodeForce) {
   std::vector<Eigen::Vector3d> total(x.size(), Eigen::Vector3d::Zero());
   for (const Spring& s : grid.springs()) {
     const auto a = static_cast<std::size_t>(s.a), b = static_cast<std::size_t>(s.b);
-    const Vector6d g = spring_gradient(x[a], x[b], s, model.table(s.direction));
+    const Vector6d g = spring_gradient(x[a], x[b], s, model.table(s.kind));
     total[a] += g.head<3>(), total[b] += g.tail<3>();
   }
   for (int k = 0; k < grid.node_count(); ++k) {

@@ -11,7 +11,7 @@ namespace {
 
 Model flat_fabric() {
   Model model = test::clamped_fabric(4);  // linear tables measured to strain 1
-  for (int k = 0; k < model.node_count(); ++k) model.start[static_cast<std::size_t>(k)] = model.grid.rest_position(k);
+  for (int k = 0; k < model.node_count(); ++k) model.start[static_cast<std::size_t>(k)] = model.fabric.rest_position(k);
   return model;
 }
 

@@ -16,7 +16,7 @@ constexpr double kAreaTolerance = 1e-15;
 
 Model flat(int divisions) {
   Model model = test::clamped_fabric(divisions);
-  for (int k = 0; k < model.node_count(); ++k) model.start[static_cast<std::size_t>(k)] = model.grid.rest_position(k);
+  for (int k = 0; k < model.node_count(); ++k) model.start[static_cast<std::size_t>(k)] = model.fabric.rest_position(k);
   return model;
 }
 
@@ -75,9 +75,9 @@ TEST(FabricFigures, TentHasItsAreaAndItsPeakOnTheSlope) {
 TEST(FabricFigures, ContactAreaIsTheShareAroundContactNodes) {
   const Model model = flat(10);
   std::vector<unsigned char> contact(model.start.size(), 0);
-  contact[static_cast<std::size_t>(model.grid.node(0, 0))] = 1;
+  contact[static_cast<std::size_t>(model.fabric.node(0, 0))] = 1;
   EXPECT_NEAR(fabric_figures(model, model.start, contact).contact_area_m2, 0.25 * 0.01 / 100, 1e-18);
-  contact[static_cast<std::size_t>(model.grid.node(5, 5))] = 1;  // inside: four cells' quarters
+  contact[static_cast<std::size_t>(model.fabric.node(5, 5))] = 1;  // inside: four cells' quarters
   EXPECT_NEAR(fabric_figures(model, model.start, contact).contact_area_m2, 1.25 * 0.01 / 100, 1e-18);
 }
 

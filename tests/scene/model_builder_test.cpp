@@ -47,10 +47,10 @@ TEST_F(ModelBuilder, BuildsLocksBodiesAndStart) {
   const Model model = build(scene("[[constraint]]\nnodes = \"perimeter\"\n[[constraint]]\nnode = [5, 5]\naxes = \"z\"\n"));
   EXPECT_EQ(model.node_count(), 121);
   EXPECT_EQ(model.bodies.size(), 1u);
-  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.grid.node(0, 3))], kLockX | kLockY | kLockZ);
-  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.grid.node(5, 5))], kLockZ);
-  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.grid.node(4, 5))], 0);
-  EXPECT_DOUBLE_EQ(model.start[static_cast<std::size_t>(model.grid.node(5, 5))].z(), 0.02);
+  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.fabric.node(0, 3))], kLockX | kLockY | kLockZ);
+  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.fabric.node(5, 5))], kLockZ);
+  EXPECT_EQ(model.locks[static_cast<std::size_t>(model.fabric.node(4, 5))], 0);
+  EXPECT_DOUBLE_EQ(model.start[static_cast<std::size_t>(model.fabric.node(5, 5))].z(), 0.02);
 }
 
 TEST_F(ModelBuilder, NodeSetThatSelectsNothing) {
@@ -212,7 +212,7 @@ TEST_F(ModelBuilder, OneFileStatingTheDensityIsEnough) {
   const std::string weft = "weft = \"table.csv\"";
   text.replace(text.find(weft), weft.size(), "weft = \"weft.csv\"");
   const Model model = build(text);
-  EXPECT_NEAR(model.loads[0].z(), -0.3 * model.grid.node_areas()[0] * kStandardGravity_m_s2, 1e-15);
+  EXPECT_NEAR(model.loads[0].z(), -0.3 * model.fabric.node_areas()[0] * kStandardGravity_m_s2, 1e-15);
 }
 
 }  // namespace

@@ -38,8 +38,8 @@ TEST(LoadScene, ReadsValuesInSIAndResolvesPaths) {
   const std::string path = dir.write("scene.toml", kMinimal);
   const Scene scene = load_scene(path);
   EXPECT_EQ(scene.name, "scene");
-  EXPECT_EQ(scene.grid.width_m, 0.1);
-  EXPECT_EQ(scene.grid.divisions_weft, 8);
+  EXPECT_EQ(scene.fabric.width_m, 0.1);
+  EXPECT_EQ(scene.fabric.divisions_weft, 8);
   EXPECT_EQ(scene.warp_path, dir.path("warp.csv"));
   ASSERT_EQ(scene.constraints.size(), 1u);
   EXPECT_EQ(scene.constraints[0].axes, kLockX | kLockY | kLockZ);
@@ -181,7 +181,7 @@ TEST(LoadScene, OverridesReplaceValuesByDottedKey) {
                                         {"constraint.0.axes", "xy"},
                                         {"fabric.warp", "other.csv"}});
   EXPECT_EQ(scene.solver.relax.tolerance_N, 2.5e-4);
-  EXPECT_EQ(scene.grid.divisions_warp, 10);
+  EXPECT_EQ(scene.fabric.divisions_warp, 10);
   EXPECT_EQ(scene.constraints[0].axes, kLockX | kLockY);
   EXPECT_EQ(scene.warp_path, dir.path("other.csv"));
 }

@@ -18,11 +18,11 @@ namespace {
 // The stretch energy of the springs at node k: the only part of the total that moving k changes.
 double energy_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int k) {
   double energy = 0.0;
-  for (const int s : model.grid.springs_at(k)) {
+  for (const int s : model.fabric.springs_at(k)) {
     if (s < 0) continue;
-    const Spring& spring = model.grid.springs()[static_cast<std::size_t>(s)];
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     energy += spring_energy(x[static_cast<std::size_t>(spring.a)], x[static_cast<std::size_t>(spring.b)],
-                            spring, model.table(spring.direction));
+                            spring, model.table(spring.kind));
   }
   return energy;
 }

@@ -53,7 +53,7 @@ void expect_converged_outside(const Model& model, const SolverState& state, cons
 
 double largest_strain(const Model& model, const std::vector<Eigen::Vector3d>& x) {
   double largest = -1.0;
-  for (const Spring& s : model.grid.springs())
+  for (const Spring& s : model.fabric.springs())
     largest = std::max(largest, spring_strain(x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)],
                                               s.rest_length));
   return largest;
@@ -91,9 +91,9 @@ TEST(NodeMasses, ShareTheFabricByArea) {
   const Model model = clamped_fabric(4);
   const std::vector<double> mass = node_masses(model, 0.2);
   const double cell = 0.2 * 0.025 * 0.025;
-  EXPECT_NEAR(mass[static_cast<std::size_t>(model.grid.node(2, 2))], cell, 1e-15);
-  EXPECT_NEAR(mass[static_cast<std::size_t>(model.grid.node(0, 2))], cell / 2, 1e-15);
-  EXPECT_NEAR(mass[static_cast<std::size_t>(model.grid.node(0, 0))], cell / 4, 1e-15);
+  EXPECT_NEAR(mass[static_cast<std::size_t>(model.fabric.node(2, 2))], cell, 1e-15);
+  EXPECT_NEAR(mass[static_cast<std::size_t>(model.fabric.node(0, 2))], cell / 2, 1e-15);
+  EXPECT_NEAR(mass[static_cast<std::size_t>(model.fabric.node(0, 0))], cell / 4, 1e-15);
   double total = 0.0;
   for (const double m : mass) total += m;
   EXPECT_NEAR(total, 0.2 * 0.1 * 0.1, 1e-15);
@@ -110,9 +110,9 @@ TEST(StableTimeStep, KeepsUnderTheLargestFrequencyOfTheStiffness) {
     const TimeStep step = stable_time_step(model, mass, 1.0);
     const int n = 3 * model.node_count();
     Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);
-    for (const Spring& s : model.grid.springs()) {
+    for (const Spring& s : model.fabric.springs()) {
       const Matrix6d h = spring_hessian(model.start[static_cast<std::size_t>(s.a)],
-                                        model.start[static_cast<std::size_t>(s.b)], s, model.table(s.direction));
+                                        model.start[static_cast<std::size_t>(s.b)], s, model.table(s.kind));
       const int at[2] = {3 * s.a, 3 * s.b};
       for (int p = 0; p < 2; ++p)
         for (int q = 0; q < 2; ++q) k.block<3, 3>(at[p], at[q]) += h.block<3, 3>(3 * p, 3 * q);
@@ -174,7 +174,7 @@ TEST(Dynamic, HarshStartConverges) {
 
 TEST(Dynamic, LockedAxesNeverMove) {
   Model model = fabric_over_sphere(0.02);
-  for (int j = 1; j < 20; ++j) model.locks[static_cast<std::size_t>(model.grid.node(8, j))] = kLockX;
+  for (int j = 1; j < 20; ++j) model.locks[static_cast<std::size_t>(model.fabric.node(8, j))] = kLockX;
   Summary summary;
   const SolverState state = run_dynamic(model, to(1e-8), &summary);
   expect_converged_outside(model, state, summary);
@@ -194,8 +194,8 @@ TEST(Dynamic, StretchLimitHoldsEverySpringAfterOneStep) {
   Model model = clamped_fabric(10);
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
-    model.locks[i] = model.grid.j_of(k) == 0 ? kLockX | kLockY | kLockZ : 0;
-    model.start[i] = model.grid.rest_position(k);
+    model.locks[i] = model.fabric.j_of(k) == 0 ? kLockX | kLockY | kLockZ : 0;
+    model.start[i] = model.fabric.rest_position(k);
     model.start[i].y() *= 3.0;
   }
   DynamicOptions options = to(1e-12);
@@ -222,7 +222,7 @@ TEST(Dynamic, IterationCapStopsNotConverged) {
 
 TEST(Dynamic, NonFiniteStartIsNumericalFailure) {
   Model model = clamped_fabric(4);
-  model.start[static_cast<std::size_t>(model.grid.node(2, 2))].z() = std::nan("");
+  model.start[static_cast<std::size_t>(model.fabric.node(2, 2))].z() = std::nan("");
   SolverState state = SolverState::at_start(model);
   const Summary summary = dynamic(model, state, DynamicOptions{});
   EXPECT_EQ(summary.termination, Termination::numerical_failure);

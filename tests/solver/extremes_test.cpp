@@ -112,7 +112,7 @@ TEST_P(Extremes, TwoByTwoGrid) {
   for (int k = 0; k < 4; ++k) {
     const auto i = static_cast<std::size_t>(k);
     model.locks[i] = k == 0 ? kLockX | kLockY | kLockZ : 0;
-    model.start[i] = 2.0 * model.grid.rest_position(k) + Eigen::Vector3d(0, 0, 0.01 * k);
+    model.start[i] = 2.0 * model.fabric.rest_position(k) + Eigen::Vector3d(0, 0, 0.01 * k);
   }
   expect_converged(model, run(model, GetParam(), 1e-9));
 }
@@ -135,7 +135,7 @@ TEST_P(Extremes, ThousandByThousandGrid) {
 TEST_P(Extremes, ZeroLengthSprings) {
   Model model = clamped_fabric(6, 0.05);
   for (int k = 0; k < model.node_count(); ++k)
-    if (!model.grid.on_perimeter(k)) model.start[static_cast<std::size_t>(k)] = {0.05, 0.05, 0.01};
+    if (!model.fabric.on_perimeter(k)) model.start[static_cast<std::size_t>(k)] = {0.05, 0.05, 0.01};
   expect_converged(model, run(model, GetParam(), 1e-6));
 }
 
@@ -146,7 +146,7 @@ TEST_P(Extremes, NodesStartingExactlyOnTheSurface) {
   int on_surface = 0;
   for (int k = 0; k < model.node_count(); ++k) {
     auto& x = model.start[static_cast<std::size_t>(k)];
-    if (model.grid.on_perimeter(k) || (x.head<2>() - Eigen::Vector2d(0.05, 0.05)).norm() > 0.02) continue;
+    if (model.fabric.on_perimeter(k) || (x.head<2>() - Eigen::Vector2d(0.05, 0.05)).norm() > 0.02) continue;
     x = model.bodies.front().closest(x).point;
     ++on_surface;
   }

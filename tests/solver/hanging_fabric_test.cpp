@@ -20,7 +20,7 @@ constexpr double kStiffness_N_m = 5.0;  // the top springs stretch by ~4 %
 
 // A 10 × 10 cm fabric hanging in the x-z plane: weft (j) runs down, top row locked.
 Model hanging_fabric(int divisions_warp, int divisions_weft) {
-  FabricGrid grid({0.1, 0.1, divisions_warp, divisions_weft});
+  Fabric grid({0.1, 0.1, divisions_warp, divisions_weft});
   std::vector<AxisMask> locks(static_cast<std::size_t>(grid.node_count()), 0);
   std::vector<Eigen::Vector3d> start(static_cast<std::size_t>(grid.node_count()));
   for (int k = 0; k < grid.node_count(); ++k) {
@@ -34,7 +34,7 @@ Model hanging_fabric(int divisions_warp, int divisions_weft) {
 }
 
 // z of each row at rest, from the strains of the springs above it.
-std::vector<double> exact_row_heights(const FabricGrid& grid) {
+std::vector<double> exact_row_heights(const Fabric& grid) {
   const int m = grid.nodes_weft();
   const double h = grid.spacing_weft();
   std::vector<double> z(static_cast<std::size_t>(m), 0.0);
@@ -61,7 +61,7 @@ TEST_P(HangingFabric, StretchesAsTheWeightBelowEachSpringSays) {
   ASSERT_TRUE(summary.converged()) << summary.message;
   EXPECT_LE(measure_equilibrium(model, state.x, 1e-9).max_residual_N, 10 * tolerance_N);
 
-  const std::vector<double> z = exact_row_heights(model.grid);
+  const std::vector<double> z = exact_row_heights(model.fabric);
   const double total_stretch = -z.back() - 0.1;  // ~2 mm
   ASSERT_GT(total_stretch, 1e-3);
   // Down the fabric the springs' stiffness is ≥ w·k/h ≈ 6 N/m, so e leaves z within ~1e-10 m;
@@ -70,8 +70,8 @@ TEST_P(HangingFabric, StretchesAsTheWeightBelowEachSpringSays) {
   const double lateral_m = 5.0 * tolerance_N / 0.01;
   for (int k = 0; k < model.node_count(); ++k) {
     const Eigen::Vector3d& p = state.x[static_cast<std::size_t>(k)];
-    EXPECT_NEAR(p.z(), z[static_cast<std::size_t>(model.grid.j_of(k))], 1e-6 * total_stretch) << "node " << k;
-    EXPECT_NEAR(p.x(), model.grid.rest_position(k).x(), lateral_m) << "node " << k;
+    EXPECT_NEAR(p.z(), z[static_cast<std::size_t>(model.fabric.j_of(k))], 1e-6 * total_stretch) << "node " << k;
+    EXPECT_NEAR(p.x(), model.fabric.rest_position(k).x(), lateral_m) << "node " << k;
     EXPECT_NEAR(p.y(), 0.0, lateral_m) << "node " << k;
   }
 }

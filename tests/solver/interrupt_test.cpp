@@ -79,7 +79,7 @@ TEST_P(Interrupt, ARequestBeforeTheRunStopsItAtTheStart) {
 // A node's position turns NaN (or Inf) after iteration 2: the run stops in iteration 3 and names
 // that node, whichever neighbours its value spread to.
 TEST_P(Interrupt, NonFinitePositionIsANumericalFailureNamingNodeAndIteration) {
-  const int broken = model.grid.node(7, 9);
+  const int broken = model.fabric.node(7, 9);
   for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
     SolverState state = SolverState::at_start(model);
     const Summary s = solve(model, state, spec, [&](const IterationRecord& r) {

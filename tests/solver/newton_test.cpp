@@ -100,7 +100,7 @@ TEST(Newton, FabricOverSphereAgreesWithRelax) {
 TEST(Newton, HarshStartConverges) {
   const Model harsh = fabric_over_sphere(0.2);
   double max_strain = 0.0;
-  for (const Spring& s : harsh.grid.springs())
+  for (const Spring& s : harsh.fabric.springs())
     max_strain = std::max(max_strain, (harsh.start[static_cast<std::size_t>(s.b)] -
                                        harsh.start[static_cast<std::size_t>(s.a)]).norm() / s.rest_length - 1.0);
   ASSERT_GT(max_strain, 10.0);
@@ -116,7 +116,7 @@ TEST(Newton, HarshStartConverges) {
 // and every coordinate of the locked perimeter, stays exactly where it started.
 TEST(Newton, LockedAxesNeverMove) {
   Model model = fabric_over_sphere(0.02);
-  for (int j = 1; j < 20; ++j) model.locks[static_cast<std::size_t>(model.grid.node(8, j))] = kLockX;
+  for (int j = 1; j < 20; ++j) model.locks[static_cast<std::size_t>(model.fabric.node(8, j))] = kLockX;
   Summary summary;
   const SolverState state = run_newton(model, 1e-9, &summary);
   expect_converged_outside(model, state, summary);
@@ -144,7 +144,7 @@ TEST(Newton, IterationCapStopsNotConverged) {
 
 TEST(Newton, NonFiniteStartIsNumericalFailure) {
   Model model = clamped_fabric(4);
-  model.start[static_cast<std::size_t>(model.grid.node(2, 2))].z() = std::nan("");
+  model.start[static_cast<std::size_t>(model.fabric.node(2, 2))].z() = std::nan("");
   SolverState state = SolverState::at_start(model);
   const Summary summary = newton(model, state, NewtonOptions{});
   EXPECT_EQ(summary.termination, Termination::numerical_failure);

@@ -81,7 +81,7 @@ TEST(Relax, PrestretchedFabricOverSphereRestsOnIt) {
   // Contact is resolved on the tessellated sphere; 1e-9 m is far below its facets' size.
   EXPECT_LE(check.max_penetration_m, 1e-9);
   // The apex of the sphere sits 1 cm above the perimeter plane: the fabric's centre is on it.
-  const Eigen::Vector3d centre = state.x[static_cast<std::size_t>(model.grid.node(10, 10))];
+  const Eigen::Vector3d centre = state.x[static_cast<std::size_t>(model.fabric.node(10, 10))];
   EXPECT_NEAR(centre.z(), 0.01, 1e-4);
 }
 
@@ -91,13 +91,13 @@ TEST(Relax, LockedNodesInContactKeepTheirLockedCoordinates) {
   Model model = clamped_fabric(20, 0.1);
   lift_interior(model, 0.02);
   model.bodies.emplace_back("sphere", test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 40, 80));
-  for (int j = 1; j < 20; ++j) model.locks[static_cast<std::size_t>(model.grid.node(8, j))] = kLockX;
+  for (int j = 1; j < 20; ++j) model.locks[static_cast<std::size_t>(model.fabric.node(8, j))] = kLockX;
   SolverState state;
   const EquilibriumReport check = relax_to(model, 1e-6, &state);
   EXPECT_GT(check.contact_nodes, 10);
   EXPECT_LE(check.max_penetration_m, 1e-9);
   for (int j = 1; j < 20; ++j) {
-    const auto k = static_cast<std::size_t>(model.grid.node(8, j));
+    const auto k = static_cast<std::size_t>(model.fabric.node(8, j));
     EXPECT_EQ(state.x[k].x(), model.start[k].x()) << "node (8, " << j << ")";
   }
 }
@@ -107,9 +107,9 @@ TEST(Relax, LockedAxesDoNotMove) {
   Model model = clamped_fabric(8, 0.05);
   for (int k = 0; k < model.node_count(); ++k) {
     auto& x = model.start[static_cast<std::size_t>(k)];
-    if (!model.grid.on_perimeter(k)) x += Eigen::Vector3d(0.003, -0.002, 0.01);
+    if (!model.fabric.on_perimeter(k)) x += Eigen::Vector3d(0.003, -0.002, 0.01);
   }
-  const int locked_z = model.grid.node(4, 4), locked_xy = model.grid.node(2, 5);
+  const int locked_z = model.fabric.node(4, 4), locked_xy = model.fabric.node(2, 5);
   model.locks[static_cast<std::size_t>(locked_z)] = kLockZ;
   model.locks[static_cast<std::size_t>(locked_xy)] = kLockX | kLockY;
   SolverState state = SolverState::at_start(model);
@@ -124,7 +124,7 @@ TEST(Relax, LockedAxesDoNotMove) {
   EXPECT_NE(state.x[static_cast<std::size_t>(locked_z)].head<2>(),
             model.start[static_cast<std::size_t>(locked_z)].head<2>());
   for (int k = 0; k < model.node_count(); ++k) {
-    if (model.grid.on_perimeter(k)) {
+    if (model.fabric.on_perimeter(k)) {
       EXPECT_EQ(state.x[static_cast<std::size_t>(k)], model.start[static_cast<std::size_t>(k)]);
     }
   }
@@ -160,7 +160,7 @@ TEST(Relax, AlreadyInEquilibriumStopsAtIterationZero) {
 
 TEST(Relax, NonFiniteStateIsANumericalFailure) {
   Model model = clamped_fabric(4);
-  model.start[static_cast<std::size_t>(model.grid.node(2, 2))].z() = std::nan("");
+  model.start[static_cast<std::size_t>(model.fabric.node(2, 2))].z() = std::nan("");
   SolverState state = SolverState::at_start(model);
   const Summary summary = relax(model, state, RelaxOptions{});
   EXPECT_EQ(summary.termination, Termination::numerical_failure);

@@ -40,7 +40,7 @@ double catenary_sag() {
 
 // The yarn starts slack along a parabola below the line between its ends, both end pairs held.
 Model yarn(int divisions) {
-  FabricGrid grid({kLength_m, kWidth_m, divisions, 1});
+  Fabric grid({kLength_m, kWidth_m, divisions, 1});
   std::vector<AxisMask> locks(static_cast<std::size_t>(grid.node_count()), 0);
   std::vector<Eigen::Vector3d> start(static_cast<std::size_t>(grid.node_count()));
   for (int k = 0; k < grid.node_count(); ++k) {
@@ -62,7 +62,7 @@ double resting_sag(int divisions) {
   SolverState state = SolverState::at_start(model);
   const Summary summary = solve(model, state, spec);
   EXPECT_TRUE(summary.converged()) << "N=" << divisions << ": " << summary.message;
-  return -state.x[static_cast<std::size_t>(model.grid.node(divisions / 2, 0))].z();
+  return -state.x[static_cast<std::size_t>(model.fabric.node(divisions / 2, 0))].z();
 }
 
 TEST(YarnCatenary, SagApproachesTheCatenaryAsTheSquareOfTheSpacing) {
@@ -80,7 +80,7 @@ TEST(YarnCatenary, SagApproachesTheCatenaryAsTheSquareOfTheSpacing) {
 // without the limit reaches Newton's rest; with it, no spring is ever left beyond the limit.
 double longest_strain(const Model& model, const SolverState& state) {
   double longest = 0.0;
-  for (const Spring& s : model.grid.springs())
+  for (const Spring& s : model.fabric.springs())
     longest = std::max(longest, (state.x[static_cast<std::size_t>(s.b)] - state.x[static_cast<std::size_t>(s.a)]).norm() /
                                         s.rest_length - 1.0);
   return longest;
@@ -91,8 +91,8 @@ Model yarn_pinned_at_its_middle(int divisions, double stiffness_N_m) {
   Model model = yarn(divisions);
   model.warp = model.weft = test::linear_table(stiffness_N_m);
   for (int k = 0; k < model.node_count(); ++k) {
-    model.start[static_cast<std::size_t>(k)] = model.grid.rest_position(k);
-    model.locks[static_cast<std::size_t>(k)] = model.grid.i_of(k) == divisions / 2 ? kLockX | kLockY | kLockZ : 0;
+    model.start[static_cast<std::size_t>(k)] = model.fabric.rest_position(k);
+    model.locks[static_cast<std::size_t>(k)] = model.fabric.i_of(k) == divisions / 2 ? kLockX | kLockY | kLockZ : 0;
   }
   return model;
 }

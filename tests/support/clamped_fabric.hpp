@@ -14,7 +14,7 @@ inline TensionTable linear_table(double stiffness_N_per_m) {
 // Stretched in its plane by `prestretch`: a clamped membrane needs tension to resist moving
 // out of plane.
 inline Model clamped_fabric(int divisions, double prestretch = 0.0) {
-  FabricGrid grid({0.1, 0.1, divisions, divisions});
+  Fabric grid({0.1, 0.1, divisions, divisions});
   std::vector<AxisMask> locks(static_cast<std::size_t>(grid.node_count()), 0);
   std::vector<Eigen::Vector3d> x(static_cast<std::size_t>(grid.node_count()));
   const Eigen::Vector3d centre(0.05, 0.05, 0.0);
@@ -27,7 +27,7 @@ inline Model clamped_fabric(int divisions, double prestretch = 0.0) {
 
 inline void lift_interior(Model& model, double height) {
   for (int k = 0; k < model.node_count(); ++k)
-    if (!model.grid.on_perimeter(k)) model.start[static_cast<std::size_t>(k)].z() = height;
+    if (!model.fabric.on_perimeter(k)) model.start[static_cast<std::size_t>(k)].z() = height;
 }
 
 }  // namespace fabform::test

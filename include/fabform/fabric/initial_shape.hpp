@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "fabform/fabric/grid.hpp"
+#include "fabform/fabric/fabric.hpp"
 
 namespace fabform {
 
@@ -29,7 +29,7 @@ struct InitialShape {
 
 bool parse_initial_kind(const std::string& name, InitialShape::Kind* kind);
 
-std::vector<Eigen::Vector3d> initial_positions(const FabricGrid& grid,
+std::vector<Eigen::Vector3d> initial_positions(const Fabric& grid,
                                                const Eigen::Vector3d& origin,
                                                const InitialShape& shape);
 

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "fabform/fabric/grid.hpp"
+#include "fabform/fabric/fabric.hpp"
 
 namespace fabform {
 
@@ -25,7 +25,7 @@ struct NodeSetSpec {
 bool parse_named_node_set(const std::string& name, NodeSetSpec* spec);
 
 /// The nodes a spec selects, in increasing order; possibly empty (the caller reports it).
-std::vector<int> select_nodes(const FabricGrid& grid, const NodeSetSpec& spec);
+std::vector<int> select_nodes(const Fabric& grid, const NodeSetSpec& spec);
 
 /// Per-node axis locks: bit 0 x, bit 1 y, bit 2 z (seed 003, §3.2.3).
 using AxisMask = unsigned char;

@@ -5,7 +5,7 @@
 // tension per width × width) and stores the energy E = w·L·∫₀^ε T.
 #include <Eigen/Core>
 
-#include "fabform/fabric/grid.hpp"
+#include "fabform/fabric/fabric.hpp"
 #include "fabform/material/tension_table.hpp"
 
 namespace fabform {

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "fabform/fabric/grid.hpp"
+#include "fabform/fabric/fabric.hpp"
 
 namespace fabform {
 
@@ -15,7 +15,7 @@ namespace fabform {
 constexpr double kStandardGravity_m_s2 = 9.80665;
 
 /// The weight of each node, along −z: areal density × the node's area × g.
-std::vector<Eigen::Vector3d> gravity_loads(const FabricGrid& grid, double areal_density_kg_m2,
+std::vector<Eigen::Vector3d> gravity_loads(const Fabric& grid, double areal_density_kg_m2,
                                            double acceleration_m_s2);
 
 /// −Σ f_k · x_k (J): the potential of constant loads; 0 when there are none (`loads` empty).

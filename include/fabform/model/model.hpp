@@ -1,12 +1,13 @@
 #pragma once
-// Everything a solver needs, in SI, validated: the fabric grid and its warp and weft tables,
-// the per-node axis locks, the rigid bodies, the starting positions and the constant loads.
+// Everything a solver needs, in SI, validated: the fabric and the tables of its springs, the
+// per-node axis locks, the rigid bodies, the starting positions and the constant loads.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "fabform/fabric/grid.hpp"
+#include "fabform/fabric/fabric.hpp"
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/rigid_body.hpp"
 #include "fabform/material/tension_table.hpp"
@@ -14,7 +15,7 @@
 namespace fabform {
 
 struct Model {
-  FabricGrid grid;
+  Fabric fabric;
   TensionTable warp;
   TensionTable weft;
   std::vector<AxisMask> locks;  // one per node
@@ -22,11 +23,20 @@ struct Model {
   std::vector<Eigen::Vector3d> start;  // one per node
   std::vector<Eigen::Vector3d> loads = {};  // N, one per node (the fabric's weight); empty: none
   std::vector<std::string> modelled = {};   // each term of the model, said for result.json
+  std::optional<TensionTable> shear = {};   // the shear springs' table, when the fabric has them
+  std::optional<TensionTable> bend = {};    // the bend springs' table, when the fabric has them
 
-  const TensionTable& table(Direction direction) const {
-    return direction == Direction::warp ? warp : weft;
+  /// The table a kind of spring follows; the model builder makes sure the fabric's kinds have one.
+  const TensionTable& table(SpringKind kind) const {
+    switch (kind) {
+      case SpringKind::warp: return warp;
+      case SpringKind::weft: return weft;
+      case SpringKind::shear: return shear.value();
+      case SpringKind::bend: return bend.value();
+    }
+    return warp;
   }
-  int node_count() const { return grid.node_count(); }
+  int node_count() const { return fabric.node_count(); }
 };
 
 }  // namespace fabform

@@ -10,7 +10,7 @@
 
 namespace fabform {
 
-/// The most stretched spring of one direction: its strain, its first node's grid indices and
+/// The most stretched spring of one direction: its strain, its first node's lattice indices and
 /// its midpoint in the formed fabric.
 struct StrainPeak {
   double strain = 0.0;
@@ -18,8 +18,8 @@ struct StrainPeak {
   Eigen::Vector3d at_m = Eigen::Vector3d::Zero();
 };
 
-/// Bins [edges[b], edges[b+1]) of strain and the formed area of the cells whose mean warp
-/// (weft) strain falls in each; every cell counts once in each histogram.
+/// Bins [edges[b], edges[b+1]) of strain and the formed area of the faces whose mean warp
+/// (weft) strain falls in each; every face with warp (weft) sides counts once in that histogram.
 struct StrainHistogram {
   std::vector<double> edges;
   std::vector<double> warp_area_m2;
@@ -27,8 +27,8 @@ struct StrainHistogram {
 };
 
 struct FabricFigures {
-  double area_flat_m2 = 0.0;    // W × H, the fabric before forming
-  double area_formed_m2 = 0.0;  // the formed cells, each as two triangles
+  double area_flat_m2 = 0.0;    // the fabric before forming (W × H for a rectangle)
+  double area_formed_m2 = 0.0;  // the formed faces, a four-sided one as two triangles
   double contact_area_m2 = 0.0;  // the share of formed area around the nodes on a body
   StrainPeak max_warp;
   StrainPeak max_weft;

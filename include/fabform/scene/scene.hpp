@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 
 #include "fabform/error.hpp"
-#include "fabform/fabric/grid.hpp"
+#include "fabform/fabric/fabric.hpp"
 #include "fabform/fabric/initial_shape.hpp"
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/placement.hpp"
@@ -46,13 +46,38 @@ struct GravitySpec {
   SourceLocation where;
 };
 
+// [shear]: the diagonal springs (seed 000's triangular mesh, seed 004's shear springs) and the
+// material file of their bias tension.
+struct ShearSpec {
+  bool on = false;
+  std::string material_path;
+  SourceLocation material_where;
+  SourceLocation where;
+};
+
+// [bending]: seed 004's bend springs, linear in tension and compression: T = k·ε per width.
+struct BendingSpec {
+  bool on = false;
+  double stiffness_N_m = 0.0;
+  SourceLocation where;
+};
+
+// [drape]: the scene is a drape test of a circular fabric; its result gives the drape
+// coefficient, with the named body as the support disc (none: over a pin, A_disc = 0).
+struct DrapeSpec {
+  bool on = false;
+  std::string support;  // a body's name, or ""
+  SourceLocation support_where;
+  SourceLocation where;
+};
+
 struct Scene {
   std::string path;
   std::string name;
   std::string description;
-  GridSpec grid;
-  SourceLocation grid_where;
-  Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();  // the flat fabric's lower-left corner
+  FabricSpec fabric;
+  SourceLocation fabric_where;  // the key that sets the fabric's divisions (or rings)
+  Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();  // the flat fabric's bounding box's lower-left corner
   std::string warp_path;
   SourceLocation warp_where;
   std::string weft_path;
@@ -60,6 +85,9 @@ struct Scene {
   std::vector<BodySpec> bodies;
   std::vector<ConstraintSpec> constraints;
   GravitySpec gravity;
+  ShearSpec shear;
+  BendingSpec bending;
+  DrapeSpec drape;
   InitialShape initial;
   SourceLocation initial_where;
   SolverSpec solver;

@@ -1,0 +1,60 @@
+#pragma once
+// Where a fabric's nodes lie in the flat cloth and which faces they bound, for each shape the
+// seeds use: seed 003's rectangle of n × m nodes, and seed 000's circle, meshed as the lattice
+// points inside it (quadrangular; triangular is the same lattice with diagonal springs) or as
+// concentric rings on radial lines (arc). The springs are derived from the faces (fabric.hpp).
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace fabform {
+
+/// A quadrilateral or a triangle of the flat fabric, counter-clockwise seen from +z.
+struct Face {
+  std::array<int, 4> corner = {-1, -1, -1, -1};
+  int corners = 4;
+};
+
+struct FabricSpec {
+  enum class Shape { rectangle, circle };
+  enum class Mesh { quadrangular, triangular, arc };
+  double width_m = 0.1;   // rectangle W along warp (x); circle: its diameter (= height_m)
+  double height_m = 0.1;  // rectangle H along weft (y)
+  int divisions_warp = 40;  // rectangle: springs along x; circle lattice: cells across the diameter
+  int divisions_weft = 40;  // rectangle: springs along y; circle lattice: as divisions_warp
+  Shape shape = Shape::rectangle;
+  Mesh mesh = Mesh::quadrangular;  // circles; a rectangle is quadrangular
+  int rings = 0;   // arc: concentric rings around the centre node
+  int spokes = 0;  // arc: radial lines, nodes on each ring
+  bool shear_springs = false;  // both diagonals of every four-sided cell (implied by triangular)
+  bool bend_springs = false;   // a spring over every two consecutive springs in line
+
+  /// Why the spec cannot make a fabric, or "".
+  std::string invalid_reason() const;
+  double radius_m() const { return 0.5 * width_m; }
+};
+
+const char* to_string(FabricSpec::Shape shape);
+const char* to_string(FabricSpec::Mesh mesh);
+
+struct FabricLayout {
+  std::vector<Eigen::Vector3d> rest;           // flat positions, z = 0
+  std::vector<std::array<int, 2>> lattice;     // per node: (i, j), or (ring, spoke) on an arc mesh
+  std::array<int, 2> lattice_size = {0, 0};    // extents of the lattice indices
+  std::array<double, 2> spacing = {0.0, 0.0};  // lattice spacing along x and y (arc: ring spacing, arc length)
+  std::vector<Face> faces;
+};
+
+/// The lattice of a rectangle; the lattice cells inside a circle; an arc mesh. The spec must be
+/// valid (FabricSpec::invalid_reason); a circle lattice with no cell inside throws
+/// std::invalid_argument.
+FabricLayout rectangle_layout(const FabricSpec& spec);
+FabricLayout circle_lattice_layout(const FabricSpec& spec);
+FabricLayout arc_layout(const FabricSpec& spec);
+
+/// The area of a face at positions x (m²): a quadrilateral as two triangles split at corner 0.
+double face_area(const Face& face, const std::vector<Eigen::Vector3d>& x);
+
+}  // namespace fabform
