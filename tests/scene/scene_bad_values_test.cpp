@@ -27,10 +27,22 @@ namespace {
 
 // ---------------------------------------------------------------------------------------------
 // The valid scene every case starts from: every key of the format, written once, with the
-// repository's material tables and dome mold. Two variants, as the initial shape's keys depend
-// on the shape: lift (height_m) and wrap (axis_m, radius_m, facing_deg, span_deg).
+// repository's material tables and dome mold. Four variants, as some keys depend on others:
+// the initial shape's on the shape, lift (height_m) or wrap (axis_m, radius_m, facing_deg,
+// span_deg); the fabric's on its outline, a rectangle or a circle meshed as a lattice (circle)
+// or as rings on spokes (arc). The circles also hold the drape test's force terms and [drape].
 
-enum class Base { lift, wrap };
+enum class Base { lift, wrap, circle, arc };
+
+const char* prefix_of(Base base) {
+  switch (base) {
+    case Base::lift: return "";
+    case Base::wrap: return "wrap_";
+    case Base::circle: return "circle_";
+    case Base::arc: return "arc_";
+  }
+  return "";
+}
 
 struct Entry {
   std::string key;
@@ -49,23 +61,41 @@ struct SceneText {
 };
 
 Section initial_section(Base base) {
-  if (base == Base::lift) return {"initial", "[initial]", {{"shape", "\"lift\""}, {"height_m", "0.01"}}};
+  if (base != Base::wrap) return {"initial", "[initial]", {{"shape", "\"lift\""}, {"height_m", "0.01"}}};
   return {"initial", "[initial]",
           {{"shape", "\"wrap\""}, {"axis_m", "[0.05, 0.05]"}, {"radius_m", "0.05"},
            {"facing_deg", "0.0"}, {"span_deg", "90.0"}}};
 }
 
-// A 10 x 10 cm knit, 4 x 4 divisions, 5 cm above a 3 cm dome, held by one constraint of each
-// selector kind. The scene's own path is scenes/sweep.toml, so paths are relative to scenes/.
+Section fabric_section(Base base) {
+  std::vector<Entry> outline;
+  if (base == Base::circle)
+    outline = {{"shape", "\"circle\""}, {"diameter_m", "0.1"}, {"mesh", "\"quadrangular\""}, {"divisions", "8"}};
+  else if (base == Base::arc)
+    outline = {{"shape", "\"circle\""}, {"diameter_m", "0.1"}, {"mesh", "\"arc\""}, {"rings", "4"}, {"spokes", "8"}};
+  else
+    outline = {{"shape", "\"rectangle\""}, {"size_m", "[0.1, 0.1]"}, {"divisions", "[4, 4]"}};
+  outline.insert(outline.end(), {{"origin_m", "[0.0, 0.0, 0.05]"},
+                                 {"warp", "\"../materials/white-swim-solid_warp.csv\""},
+                                 {"weft", "\"../materials/white-swim-solid_weft.csv\""}});
+  return {"fabric", "[fabric]", outline};
+}
+
+// The drape test's sections, in the circles' scenes: the dome is the support.
+std::vector<Section> drape_sections(Base base) {
+  if (base != Base::circle && base != Base::arc) return {};
+  return {{"shear", "[shear]", {{"material", "\"../materials/synthetic/linear-500.csv\""}}},
+          {"bending", "[bending]", {{"stiffness_N_m", "0.5"}}},
+          {"drape", "[drape]", {{"support", "\"dome\""}}}};
+}
+
+// A 10 cm knit (a square of 4 x 4 divisions or a circle), 5 cm above a 3 cm dome, held by one
+// constraint of each selector kind. The scene's own path is scenes/sweep.toml, so paths are
+// relative to scenes/.
 SceneText base_scene(Base base) {
-  return {{},
+  SceneText scene{{},
           {{"scene", "[scene]", {{"name", "\"sweep\""}, {"description", "\"every key of the scene format\""}}},
-           {"fabric", "[fabric]",
-            {{"size_m", "[0.1, 0.1]"},
-             {"divisions", "[4, 4]"},
-             {"origin_m", "[0.0, 0.0, 0.05]"},
-             {"warp", "\"../materials/white-swim-solid_warp.csv\""},
-             {"weft", "\"../materials/white-swim-solid_weft.csv\""}}},
+           fabric_section(base),
            {"body.0", "[[body]]",
             {{"name", "\"dome\""},
              {"mesh", "\"../molds/dome_hemisphere_r30mm.obj\""},
@@ -94,6 +124,11 @@ SceneText base_scene(Base base) {
              {"threads", "1"}}},
            {"output", "[output]",
             {{"dir", "\"out\""}, {"checkpoint_every_iterations", "100"}, {"checkpoint_every_minutes", "10.0"}}}}};
+  const auto gravity = std::find_if(scene.sections.begin(), scene.sections.end(),
+                                    [](const Section& s) { return s.name == "gravity"; });
+  const std::vector<Section> drape = drape_sections(base);
+  scene.sections.insert(gravity + 1, drape.begin(), drape.end());
+  return scene;
 }
 
 std::string scene_path() { return test::source_path("scenes/sweep.toml"); }
@@ -171,7 +206,7 @@ constexpr const char* kSame = "";
 
 const std::vector<KeyRow>& key_table() {
   using T = Type;
-  const Base lift = Base::lift, wrap = Base::wrap;
+  const Base lift = Base::lift, wrap = Base::wrap, circle = Base::circle, arc = Base::arc;
   static const std::vector<KeyRow> rows = {
       // key                             type          base  miss neg zero huge empty builder
       {"scene",                          T::table,     lift, A,   _,  _,   _,   _,    "", {}},
@@ -182,6 +217,22 @@ const std::vector<KeyRow>& key_table() {
       {"scene.description",              T::text,      lift, A,   _,  _,   _,   A,    "",
        {{"newline", "\"two\\nlines\"", A, kSame}}},
       {"fabric",                         T::table,     lift, R,   _,  _,   _,   _,    "", {}},
+      {"fabric.shape",                   T::choice,    lift, A,   _,  _,   _,   R,    "",
+       {{"upper_case", "\"Circle\"", R, kSame}, {"circle_without_its_keys", "\"circle\"", R, "fabric.diameter_m"}}},
+      {"fabric.shape",                   T::only_extras, circle, _, _, _,  _,   _,    "",
+       {{"rectangle_without_its_keys", "\"rectangle\"", R, "fabric.size_m"}}},
+      {"fabric.diameter_m",              T::number,    circle, R, R,  R,   R,   _,    "",
+       {{"beyond_1e6_m", "2e6", R, kSame}}},
+      {"fabric.mesh",                    T::choice,    circle, R, _,  _,   _,   R,    "",
+       {{"upper_case", "\"Arc\"", R, kSame}, {"triangular", "\"triangular\"", A, kSame},
+        {"arc_without_its_keys", "\"arc\"", R, "fabric.rings"}}},
+      {"fabric.divisions",               T::integer,   circle, R, R,  R,   R,   _,    "",
+       {{"two", "2", R, kSame}, {"three", "3", A, kSame}, {"beyond_10000", "10001", R, kSame},
+        {"a_pair", "[8, 8]", R, kSame}}},
+      {"fabric.rings",                   T::integer,   arc,  R,   R,  R,   R,   _,    "",
+       {{"one", "1", A, kSame}, {"cap", "5000", A, kSame}, {"beyond_5000", "5001", R, kSame}}},
+      {"fabric.spokes",                  T::integer,   arc,  R,   R,  R,   R,   _,    "",
+       {{"two", "2", R, kSame}, {"three", "3", A, kSame}, {"beyond_10000", "10001", R, kSame}}},
       {"fabric.size_m",                  T::vec2,      lift, R,   R,  R,   R,   _,    "",
        {{"one_side_zero", "[0.1, 0.0]", R, kSame}, {"one_side_negative", "[0.1, -0.1]", R, kSame},
         {"beyond_1e6_m", "[2e6, 0.1]", R, kSame}, {"1e6_m", "[1e6, 1e6]", A, kSame}}},
@@ -227,6 +278,17 @@ const std::vector<KeyRow>& key_table() {
       {"gravity",                        T::table,     lift, A,   _,  _,   _,   _,    "", {}},
       {"gravity.acceleration_m_s2",      T::number,    lift, A,   R,  R,   R,   _,    "",
        {{"earth", "9.80665", A, kSame}, {"cap", "1000.0", A, kSame}, {"beyond_cap", "1000.1", R, kSame}}},
+      // Each term is built only when its section is there.
+      {"shear",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
+      {"shear.material",                 T::text,      circle, R, _,  _,   _,   R,    "",
+       {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
+      {"bending",                        T::table,     circle, A, _,  _,   _,   _,    "", {}},
+      {"bending.stiffness_N_m",          T::number,    circle, R, R,  R,   R,   _,    "",
+       {{"cap", "1e9", A, kSame}, {"beyond_cap", "1.1e9", R, kSame}}},
+      {"drape",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
+      // No support: a pin test, A_disc = 0.
+      {"drape.support",                  T::text,      circle, A, _,  _,   _,   R,    "",
+       {{"newline", "\"a\\nb\"", R, kSame}, {"no_such_body", "\"mold\"", B, kSame}}},
       {"initial",                        T::table,     lift, A,   _,  _,   _,   _,    "", {}},
       {"initial.shape",                  T::choice,    lift, A,   _,  _,   _,   R,    "",
        {{"upper_case", "\"Lift\"", R, kSame}, {"flat", "\"flat\"", A, kSame}, {"bump", "\"bump\"", A, kSame},
@@ -366,7 +428,7 @@ std::string column_value(Type type, const std::string& column) {
 }
 
 std::string test_name(const KeyRow& row, const std::string& label) {
-  std::string name = std::string(row.base == Base::wrap ? "wrap_" : "") + row.key + "__" + label;
+  std::string name = prefix_of(row.base) + std::string(row.key) + "__" + label;
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return name;
@@ -554,7 +616,7 @@ INSTANTIATE_TEST_SUITE_P(EveryKey, SceneBadValue, ::testing::ValuesIn(all_cases(
 
 // The base scenes are valid through to a model: every failure above is the edited key's.
 TEST(SceneBadValueTable, BaseScenesBuildAModel) {
-  for (const Base base : {Base::lift, Base::wrap}) {
+  for (const Base base : {Base::lift, Base::wrap, Base::circle, Base::arc}) {
     const std::string text = render(base_scene(base)).text;
     const Scene scene = parse_scene(text, scene_path());
     EXPECT_NO_THROW(build_model(scene)) << text;
@@ -594,7 +656,8 @@ TEST(SceneBadValueTable, ListsEveryKeyTheParserKnows) {
   const std::pair<Base, const char*> sections[] = {
       {Base::lift, ""},          {Base::lift, "scene"},  {Base::lift, "fabric"}, {Base::lift, "body.0"},
       {Base::lift, "constraint.0"}, {Base::lift, "initial"}, {Base::lift, "solver"}, {Base::lift, "output"},
-      {Base::wrap, "initial"}};
+      {Base::wrap, "initial"},   {Base::circle, "fabric"}, {Base::arc, "fabric"},  {Base::circle, "shear"},
+      {Base::circle, "bending"}, {Base::circle, "drape"}};
   for (const auto& [base, section] : sections) {
     const std::set<std::string> known = known_keys(base_scene(base), section);
     EXPECT_FALSE(known.empty()) << "no list of known keys for section '" << section << "'";
