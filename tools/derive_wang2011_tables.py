@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Derive fabform uniaxial tension-strain tables from Wang et al. 2011 fabric data.
+"""Derive fabform tension-strain tables (warp, weft, shear) from Wang et al. 2011 fabric data.
 
 Why this exists: fabform's spring model wants, for each yarn direction, a
 one-dimensional curve "tension per unit width vs. engineering strain".  The
@@ -9,10 +9,12 @@ which describe a biaxial continuum (Green strain -> second Piola-Kirchhoff
 stress, stiffness blended by strain and direction).  This script reads those
 tables uniaxially -- stretch along warp (or weft) with zero transverse Green
 strain -- and samples the result into the fabform material table format
-(version 2, specified in materials/README.md).  Doing it in a script, with
-the inputs checked against their recorded git blob ids, keeps the shipped
-CSVs reproducible; `--check` lets a test prove the committed CSVs are what
-this derivation produces.
+(version 2, specified in materials/README.md).  It also turns the shear
+stiffness k3 into a table for seed 004's shear springs (both diagonals of
+every square cell, each family tiling the cell's area once).  Doing it in a
+script, with the inputs checked against their recorded git blob ids, keeps
+the shipped CSVs reproducible; `--check` lets a test prove the committed
+CSVs are what this derivation produces.
 
 Model (see materials/README.md and materials/source/wang2011_berkeley/FORMAT.md):
     w = 1 + e,  G = e + e^2/2,  t = clamp(6 e, 0, 1)
@@ -21,6 +23,18 @@ Model (see materials/README.md and materials/source/wang2011_berkeley/FORMAT.md)
     T = (1 + e) * S            (nominal tension per unit reference width, N/m)
 warp: column 0 (k0) of rows 0 and 1 (0 deg); weft: column 2 (k2) of rows 0
 and 5 (90 deg).
+
+Shear: ARCSim's S_uv = k3 G_uv / 2, doubled like every component, is k3 G_uv;
+the shear energy per rest area S_uv G_uv = k3 G_uv^2 = k3 gamma^2 / 4 for a
+small engineering shear gamma (G_uv = gamma/2).  Under gamma a square cell's
+diagonals strain +gamma/2 and -gamma/2; the tables are tension-only, so only
+the stretched family resists, with energy per area k_d (gamma/2)^2 / 2 =
+k_d gamma^2 / 8.  Matching gives k_d = 2 k3, blended like warp and weft:
+    k_d(e) = (1 - t) * max(2 k3_row0, 0) + t * max(2 k3_row3, 0)   (row 3: 45 deg)
+    T(e) = integral of k_d from 0 to e   (tension per unit spring width, N/m;
+                                k_d a tangent stiffness, so T rises wherever k_d > 0)
+t uses the diagonal's own strain: under pure shear the largest principal
+stretch is 1 + gamma/2, so this is ARCSim's t to first order.
 
 Usage (from anywhere; paths default relative to the repository root):
     /usr/bin/python3 tools/derive_wang2011_tables.py            # write CSVs
@@ -60,8 +74,9 @@ FABRICS = {
                          "woven denim (jeans), 99% cotton 1% spandex"),
 }
 
-# direction -> (stretching column, direction row, angle from warp in degrees)
-DIRECTIONS = {"warp": (0, 1, 0.0), "weft": (2, 5, 90.0)}
+# direction -> (stretching column, direction row, angle from warp in degrees); shear reads
+# k3 at 45 deg, the direction of the largest principal stretch under pure shear.
+DIRECTIONS = {"warp": (0, 1, 0.0), "weft": (2, 5, 90.0), "shear": (3, 3, 45.0)}
 
 KINK = 1.0 / 6.0  # t reaches 1 at w - 1 = 1/6
 SAMPLE_STRAINS = ([i * 0.02 for i in range(9)] + [KINK]
@@ -117,10 +132,33 @@ def stiffness(e, k_small, k_large):
     return (1.0 - t) * max(2.0 * k_small, 0.0) + t * max(2.0 * k_large, 0.0)
 
 
-def tension(e, k_small, k_large):
+def uniaxial_tension(e, k_small, k_large):
     """Nominal tension per unit reference width (N/m) at engineering strain e."""
     green = e + 0.5 * e * e
     return (1.0 + e) * stiffness(e, k_small, k_large) * green
+
+
+def diagonal_tension(e, k3_small, k3_large):
+    """Shear-spring tension per unit width (N/m) at the diagonal's engineering strain e, the
+    integral of k_d over the strain: k_d is read as the tangent stiffness, so the tension
+    rises wherever k_d > 0. (As a secant, k_d(e)*e, ivory rib knit's would fall between
+    e = 0.12 and 1/6, its k3 dropping from 83 to 28 N/m: negative stiffness, on which no
+    solver can rest.) stiffness() doubles k3, which gives k_d = 2 k3 (module docstring)."""
+    kink = min(e, KINK)
+    k0, k1 = stiffness(0.0, k3_small, k3_large), stiffness(KINK, k3_small, k3_large)
+    blended = k0 * kink + 3.0 * (k1 - k0) * kink * kink  # t = 6x on [0, 1/6]
+    return blended + k1 * max(e - KINK, 0.0)
+
+
+TENSION = {"warp": uniaxial_tension, "weft": uniaxial_tension, "shear": diagonal_tension}
+
+
+def diagonal_stiffening(stretching):
+    """(k3/(2 k0), k3/(2 k2)) at zero strain: the fraction by which the shear springs raise
+    the warp and weft stiffness under uniaxial stretch, where both diagonals strain eps/2
+    and add 2 * k_d (eps/2)^2 / 2 = k3 eps^2 / 2 per area, i.e. k3 to the 2 k0 (2 k2)."""
+    k0, _, k2, k3 = (max(x, 0.0) for x in stretching[0])
+    return k3 / (2 * k0), k3 / (2 * k2)
 
 
 # ---------------------------------------------------------------- output
@@ -135,25 +173,62 @@ def fmt_strain(e):
     return "%.6f" % e
 
 
-def header_lines(fabric, direction, k_small, k_large):
-    sha, desc = FABRICS[fabric]
+def uniaxial_derivation(direction, k_small, k_large):
+    """(direction lines, derivation lines) of a warp or weft header."""
     col, row, angle = DIRECTIONS[direction]
+    return [
+        "# direction: %s (ARCSim material %s axis)"
+        % (direction, "u" if direction == "warp" else "v"),
+    ], [
+        "# derivation (materials/README.md): uniaxial stretch along %s, zero transverse" % direction,
+        "#   Green strain; stretching column %d, rows 0 and %d (%g deg):" % (col, row, angle),
+        "#   k_small = %r N/m, k_large = %r N/m" % (k_small, k_large),
+        "#   G = e + e^2/2, t = clamp(6e,0,1), k = (1-t)*max(2*k_small,0) + t*max(2*k_large,0)",
+        "#   tension = (1+e)*k*G  [N/m per unit reference width]; tension-only (0 in compression);",
+    ]
+
+
+def shear_derivation(k_small, k_large, stretching):
+    """(direction lines, derivation lines) of a shear header."""
+    col, row, angle = DIRECTIONS["shear"]
+    warp, weft = diagonal_stiffening(stretching)
+    return [
+        "# direction: shear (seed 004's diagonal springs: both diagonals of every square cell,",
+        "#   each family tiling the cell's area once; strain e is the diagonal's)",
+    ], [
+        "# derivation (materials/README.md): ARCSim's S_uv = k3*G_uv/2, doubled, is k3*G_uv; shear",
+        "#   energy per rest area k3*G_uv^2 = k3*gamma^2/4 (G_uv = gamma/2, small engineering shear",
+        "#   gamma). The diagonals strain +gamma/2 and -gamma/2; only the stretched family carries",
+        "#   tension: k_d*(gamma/2)^2/2 = k_d*gamma^2/8 per area, so k_d = 2*k3.",
+        "#   stretching column %d (k3), rows 0 and %d (%g deg):" % (col, row, angle),
+        "#   k_small = %r N/m, k_large = %r N/m" % (k_small, k_large),
+        "#   t = clamp(6e,0,1), k_d = (1-t)*max(2*k_small,0) + t*max(2*k_large,0)",
+        "#   tension = integral of k_d over e (k_d a tangent stiffness, so the tension rises)",
+        "#   [N/m per unit spring width, width = cell area / diagonal length]; tension-only;",
+        "# neglected: a warp (weft) strain eps stretches both diagonals by eps/2, adding",
+        "#   k3*eps^2/2 per area: warp stiffness +k3 (%.1f %% of 2*k0), weft +k3 (%.1f %% of 2*k2)"
+        % (100 * warp, 100 * weft),
+        "#   at small strain, plus a warp-weft coupling; where both diagonals are taut, the shear",
+        "#   stiffness doubles;",
+    ]
+
+
+def header_lines(fabric, direction, stretching):
+    sha, desc = FABRICS[fabric]
+    k_small, k_large = used_stiffness(stretching, direction)
+    what, derivation = (shear_derivation(k_small, k_large, stretching) if direction == "shear"
+                        else uniaxial_derivation(direction, k_small, k_large))
     return [
         "# fabform material table, version 2 (format: materials/README.md)",
         "# fabric: %s (%s)" % (fabric, desc),
-        "# direction: %s (ARCSim material %s axis)"
-        % (direction, "u" if direction == "warp" else "v"),
+    ] + what + [
         "# source: materials/source/wang2011_berkeley/%s.json" % fabric,
         "#   git blob sha1 %s" % sha,
         "#   origin: %s @ %s, %s/%s.json" % (ORIGIN_REPO, ORIGIN_COMMIT, ORIGIN_DIR, fabric),
         "# citation: %s" % CITATION,
         "# acknowledgement: material parameters from the UC Berkeley Garment Library",
         "#   (terms: materials/LICENSES/BerkeleyGarmentLibrary_README.txt)",
-        "# derivation (materials/README.md): uniaxial stretch along %s, zero transverse" % direction,
-        "#   Green strain; stretching column %d, rows 0 and %d (%g deg):" % (col, row, angle),
-        "#   k_small = %r N/m, k_large = %r N/m" % (k_small, k_large),
-        "#   G = e + e^2/2, t = clamp(6e,0,1), k = (1-t)*max(2*k_small,0) + t*max(2*k_large,0)",
-        "#   tension = (1+e)*k*G  [N/m per unit reference width]; tension-only (0 in compression);",
+    ] + derivation + [
         "#   fabform extends the last segment beyond the last point.",
         "# regenerate (from the repository root): %s" % REGENERATE_COMMAND,
     ]
@@ -162,8 +237,13 @@ def header_lines(fabric, direction, k_small, k_large):
 def table_text(fabric, direction, stretching, density):
     """Complete CSV text for one fabric and direction."""
     k_small, k_large = used_stiffness(stretching, direction)
-    lines = header_lines(fabric, direction, k_small, k_large)
-    lines.append("# the source's areal density (its \"density\"), what gravity acts on")
+    tension = TENSION[direction]
+    lines = header_lines(fabric, direction, stretching)
+    if direction == "shear":
+        lines.append("# the source's areal density (its \"density\"); fabform takes gravity's from"
+                     " the warp and weft files")
+    else:
+        lines.append("# the source's areal density (its \"density\"), what gravity acts on")
     lines.append("areal_density_kg_m2,%r" % density)
     lines.append(HEADERS[0])
     for e in SAMPLE_STRAINS:
@@ -286,7 +366,7 @@ def check_tables(tables, out_dir):
     return problems
 
 
-def max_relative_deviation(points, k_small, k_large, lo=0.02, hi=1.0, n=980):
+def max_relative_deviation(points, tension, k_small, k_large, lo=0.02, hi=1.0, n=980):
     """Largest |table - model| / model for e in [lo, hi]: linearisation error.
 
     Below the first sample (0.02) the relative error is dominated by the
@@ -312,8 +392,10 @@ def coupling_softening(row):
 
 
 def negative_entries(stretching):
+    """Negative entries no table uses (a used one is reported as clamped instead)."""
+    used = {(r, col) for col, row, _ in DIRECTIONS.values() for r in (0, row)}
     return [(r, c, v) for r, row in enumerate(stretching)
-            for c, v in enumerate(row) if v < 0]
+            for c, v in enumerate(row) if v < 0 and (r, c) not in used]
 
 
 def summary(source_dir, out_dir):
@@ -331,11 +413,22 @@ def summary(source_dir, out_dir):
             k_small, k_large = used_stiffness(stretching, direction)
             values = " | ".join("%.4g" % evaluate(points, e) for e in SUMMARY_STRAINS)
             slope = (points[1][1] - points[0][1]) / (points[1][0] - points[0][0])
-            dev = max_relative_deviation(points, k_small, k_large)
+            dev = max_relative_deviation(points, TENSION[direction], k_small, k_large)
             lines.append("| %s | %s | %.4g | %.4g | %.1f %% |"
                          % (name, values, slope, max(2 * k_small, 0.0), 100 * dev))
             if min(k_small, k_large) < 0:
                 notes.append("%s: a used stiffness is negative and was clamped to 0" % name)
+            falling = ["%g-%g" % (e0, e1) for (e0, v0), (e1, v1) in zip(points, points[1:])
+                       if v1 < v0]
+            if falling:
+                notes.append("%s: tension falls (negative slope, unstable) on e = %s"
+                             % (name, ", ".join(falling)))
+        warp, weft = diagonal_stiffening(stretching)
+        notes.append("%s_shear.csv: k_d = 2*k3 = %.4g N/m at small strain (row 0), %.4g N/m from "
+                     "e = 1/6 (row 3); under uniaxial stretch the diagonals add k3 = %.4g N/m, "
+                     "%.1f %% of the warp's 2*k0 and %.1f %% of the weft's 2*k2"
+                     % (fabric, *(max(2 * k, 0.0) for k in used_stiffness(stretching, "shear")),
+                        max(stretching[0][3], 0.0), 100 * warp, 100 * weft))
         notes.append("%s.json: Poisson softening k1^2/(k0*k2) if the transverse direction were "
                      "free: row 0 %.1f %%, row 1 (warp) %.1f %%, row 5 (weft) %.1f %%"
                      % (fabric, *(100 * coupling_softening(stretching[r]) for r in (0, 1, 5))))

@@ -37,11 +37,11 @@ struct MergedSide {
   int faces;
 };
 
-std::vector<MergedSide> merged_sides(const std::vector<Face>& faces, const std::vector<Eigen::Vector3d>& rest) {
+std::vector<MergedSide> merged_sides(const std::vector<Face>& faces, const std::vector<double>& area) {
   std::vector<std::pair<Edge, double>> all;
   all.reserve(4 * faces.size());
-  for (const Face& f : faces)
-    for (const auto& side : sides_of(f, face_area(f, rest))) all.push_back(side);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (const auto& side : sides_of(faces[f], area[f])) all.push_back(side);
   std::sort(all.begin(), all.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
   std::vector<MergedSide> merged;
   for (const auto& [side, area] : all) {
@@ -91,14 +91,19 @@ void Fabric::adopt(FabricLayout layout) {
   for (int k = 0; k < node_count(); ++k)
     lattice_node_[static_cast<std::size_t>(j_of(k)) * static_cast<std::size_t>(lattice_size_[0]) +
                   static_cast<std::size_t>(i_of(k))] = k;
-  for (const Face& f : faces_) flat_area_ += face_area(f, rest_);
+  // A lattice's cells are spacing × spacing exactly, as seed 003 writes them; corners at
+  // rounded multiples of the spacing would give areas off by ε·(size / spacing).
+  for (const Face& f : faces_) {
+    face_areas_.push_back(spec_.mesh == FabricSpec::Mesh::arc ? face_area(f, rest_) : spacing_[0] * spacing_[1]);
+    flat_area_ += face_areas_.back();
+  }
 }
 
 // Springs along the faces' sides, warp where a side runs nearer x than y in the flat fabric
 // (on a lattice exactly along one of them), each as wide as the area it stands for over its
 // length. Warp springs come first, then weft, each in node order.
 void Fabric::add_edge_springs() {
-  for (const auto& [side, share, faces] : merged_sides(faces_, rest_)) {
+  for (const auto& [side, share, faces] : merged_sides(faces_, face_areas_)) {
     const Eigen::Vector3d d = rest_position(side.second) - rest_position(side.first);
     const SpringKind kind = std::abs(d.x()) >= std::abs(d.y()) ? SpringKind::warp : SpringKind::weft;
     // A lattice's springs are its spacing long exactly, as seed 003 writes them (positions
@@ -113,9 +118,10 @@ void Fabric::add_edge_springs() {
 // Seed 000's triangular mesh and seed 004's shear springs: both diagonals of every four-sided
 // face, rest length √2·l on a square lattice. Each diagonal family tiles the face once.
 void Fabric::add_shear_springs() {
-  for (const Face& f : faces_) {
+  for (std::size_t face = 0; face < faces_.size(); ++face) {
+    const Face& f = faces_[face];
     if (f.corners != 4) continue;
-    const double area = face_area(f, rest_);
+    const double area = face_areas_[face];
     for (const auto& [p, q] : {edge(f.corner[0], f.corner[2]), edge(f.corner[1], f.corner[3])}) {
       const double length = (rest_position(q) - rest_position(p)).norm();
       springs_.push_back({p, q, length, area / length, SpringKind::shear});
@@ -172,7 +178,7 @@ void Fabric::index_springs() {
 // The perimeter is where a face's side has no face on its other side.
 void Fabric::mark_perimeter() {
   perimeter_.assign(static_cast<std::size_t>(node_count()), 0);
-  for (const auto& [side, area, faces] : merged_sides(faces_, rest_))
+  for (const auto& [side, area, faces] : merged_sides(faces_, face_areas_))
     if (faces == 1) perimeter_[static_cast<std::size_t>(side.first)] = perimeter_[static_cast<std::size_t>(side.second)] = 1;
 }
 
@@ -200,8 +206,9 @@ void Fabric::colour_nodes() {
 
 std::vector<double> Fabric::node_areas() const {
   std::vector<double> area(static_cast<std::size_t>(node_count()), 0.0);
-  for (const Face& f : faces_) {
-    const double share = face_area(f, rest_) / f.corners;
+  for (std::size_t face = 0; face < faces_.size(); ++face) {
+    const Face& f = faces_[face];
+    const double share = face_areas_[face] / f.corners;
     for (int c = 0; c < f.corners; ++c) area[static_cast<std::size_t>(f.corner[static_cast<std::size_t>(c)])] += share;
   }
   return area;

@@ -188,7 +188,7 @@ TEST(MaterialCsv, ShippedTablesStateTheirSourcesDensity) {
   const std::vector<std::pair<std::string, double>> fabrics = {
       {"white-swim-solid", 0.204}, {"ivory-rib-knit", 0.276}, {"11oz-black-denim", 0.324}};
   for (const auto& [fabric, density] : fabrics)
-    for (const char* direction : {"_warp.csv", "_weft.csv"})
+    for (const char* direction : {"_warp.csv", "_weft.csv", "_shear.csv"})
       EXPECT_EQ(read_material_file(test::source_path("materials/" + fabric + direction)).areal_density_kg_m2,
                 density) << fabric << direction;
 }
@@ -264,7 +264,7 @@ TEST(MaterialCsv, EveryShippedTableLoadsTensionOnlyAndIncreasing) {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(test::source_path("materials")))
     if (entry.path().extension() == ".csv") files.push_back(entry.path());
-  EXPECT_EQ(files.size(), 6u);  // three fabrics × warp, weft (materials/README.md)
+  EXPECT_EQ(files.size(), 9u);  // three fabrics × warp, weft, shear (materials/README.md)
   for (const auto& file : files) {
     SCOPED_TRACE(file.string());
     const TensionTable table = read_material_table(file.string());
@@ -292,7 +292,10 @@ TEST(MaterialCsv, ShippedTablesMatchReadmeSummary) {
                       {"ivory-rib-knit_warp.csv", 4.95, 22.09, 98.29},
                       {"ivory-rib-knit_weft.csv", 13.43, 107.3, 477.4},
                       {"11oz-black-denim_warp.csv", 23.07, 97.78, 435.1},
-                      {"11oz-black-denim_weft.csv", 110.7, 443.1, 1972}};
+                      {"11oz-black-denim_weft.csv", 110.7, 443.1, 1972},
+                      {"white-swim-solid_shear.csv", 5.69, 16.13, 40.11},
+                      {"ivory-rib-knit_shear.csv", 7.451, 18.47, 36.87},
+                      {"11oz-black-denim_shear.csv", 5.816, 22.9, 78.89}};
   for (const Row& row : rows) {
     SCOPED_TRACE(row.file);
     const TensionTable table = read_material_table(test::source_path(std::string("materials/") + row.file));

@@ -96,6 +96,7 @@ class Fabric {
   std::vector<int> lattice_node_;  // nodes_warp × nodes_weft, -1 for none
   std::array<double, 2> spacing_ = {0.0, 0.0};
   std::vector<Face> faces_;
+  std::vector<double> face_areas_;  // flat, per face
   double flat_area_ = 0.0;
   std::vector<Spring> springs_;
   std::vector<std::size_t> spring_offset_;
