@@ -5,6 +5,20 @@
 #include "fabform/analysis/drape_coefficient.hpp"
 
 namespace fabform {
+namespace {
+// How far the flat specimen's own outline rises and falls about its centre: a lattice circle's
+// staircase, which no fold count should see as folds.
+double flat_outline_wiggle(const Fabric& fabric) {
+  const Eigen::Vector3d centre(fabric.spec().radius_m(), fabric.spec().radius_m(), 0.0);
+  double nearest = fabric.spec().radius_m(), farthest = 0.0;
+  for (int k = 0; k < fabric.node_count(); ++k) {
+    if (!fabric.on_perimeter(k)) continue;
+    const double r = (fabric.rest_position(k) - centre).head<2>().norm();
+    nearest = std::min(nearest, r), farthest = std::max(farthest, r);
+  }
+  return farthest - nearest;
+}
+}  // namespace
 
 std::vector<std::array<int, 3>> fabric_triangles(const Fabric& fabric) {
   std::vector<std::array<int, 3>> triangles;
@@ -33,7 +47,7 @@ DrapeFigures drape_figures(const Fabric& fabric, const std::vector<Eigen::Vector
       shadow.outlines.begin(), shadow.outlines.end(),
       [](const auto& p, const auto& q) { return p.size() < q.size(); });
   if (largest != shadow.outlines.end())
-    f.folds = count_folds(*largest, centre_m, 0.02 * 0.5 * fabric.spec().width_m);
+    f.folds = count_folds(*largest, centre_m, std::max(0.02 * fabric.spec().radius_m(), flat_outline_wiggle(fabric)));
   return f;
 }
 

@@ -140,8 +140,10 @@ void read_fabric(TableReader& r, Scene* scene) {
   scene->weft_where = r.locate_key("weft");
   if (shape == "rectangle")
     r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft"});
+  else if (scene->fabric.mesh == FabricSpec::Mesh::arc)
+    r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft"});
   else
-    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "rings", "spokes", "origin_m", "warp", "weft"});
+    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft"});
 }
 
 void read_shear(TableReader r, Scene* scene) {

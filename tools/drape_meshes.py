@@ -1,0 +1,165 @@
+#!/usr/bin/python3
+"""Seed 000's Figure 9, measured: drape coefficient and time of the three meshes of a circle.
+
+Why: seed 000 drapes a circle of fabric over a pin with a quadrangular, a triangular and an arc
+mesh at comparable node counts and compares their drape coefficients (DC) and times. This tool
+runs the same comparison on fabform's `pin` scene, and the same meshes refined, so that anyone
+can see which mesh gives which DC, at what cost, and whether the DC settles under refinement.
+
+What it does: for each mesh and each refinement level it writes a copy of the scene (default
+scenes/pin.toml) with the [fabric] mesh keys replaced, runs `build/fabform run` on it and reads
+result.json. Level 1 is seed 000's comparison: divisions 24 for the lattices (437 nodes) against
+15 rings on 32 spokes for the arc mesh (481 nodes); level L multiplies divisions, rings and
+spokes by L. The triangular mesh's diagonal springs follow the fabric's shear table
+(materials/FABRIC_shear.csv next to its warp table), added as a [shear] section.
+
+Writes into --out (default results/drape_meshes): drape_meshes.csv (one row a run), table.md
+(the Figure 9 table and the refinement table, printed too) and runs/ (each run's result.json and
+stderr, as NAME.stderr.txt). Exit status 1 if a run fails or does not converge.
+
+Usage (after tools/setup.sh, from anywhere):
+  /usr/bin/python3 tools/drape_meshes.py                 # levels 1, 2, 4: about 15 minutes
+  /usr/bin/python3 tools/drape_meshes.py --levels 1      # Figure 9 alone: seconds
+  /usr/bin/python3 tools/drape_meshes.py --smoke         # the test suite's check: tiny meshes
+Standard library only.
+"""
+import argparse
+import csv
+import json
+import pathlib
+import re
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+FABFORM = ROOT / "build" / "fabform"
+MESHES = ("quadrangular", "triangular", "arc")
+LEVEL_ONE = {"divisions": 24, "rings": 15, "spokes": 32}  # seed 000: similar numbers of nodes
+SMOKE = {"divisions": 8, "rings": 4, "spokes": 12}
+MESH_KEYS = re.compile(r"^\s*(mesh|divisions|rings|spokes)\s*=")
+COLUMNS = ["mesh", "level", "nodes", "springs", "solver", "iterations", "residual_N", "converged",
+           "drape_coefficient", "folds", "solve_seconds"]
+
+
+def mesh_lines(mesh, level, base):
+    if mesh == "arc":
+        return ['mesh = "arc"', "rings = %d" % (base["rings"] * level), "spokes = %d" % (base["spokes"] * level)]
+    return ['mesh = "%s"' % mesh, "divisions = %d" % (base["divisions"] * level)]
+
+
+def shear_table(scene_text, scene_dir):
+    """The shear table beside the scene's warp table: FABRIC_warp.csv -> FABRIC_shear.csv."""
+    warp = re.search(r'^\s*warp\s*=\s*"([^"]+)"', scene_text, re.M)
+    if not warp or not warp.group(1).endswith("_warp.csv"):
+        sys.exit("drape_meshes: the scene's warp table is not named FABRIC_warp.csv")
+    return (scene_dir / warp.group(1)).resolve().with_name(warp.group(1).split("/")[-1][:-9] + "_shear.csv")
+
+
+def variant(scene_text, scene_dir, mesh, level, base):
+    """The scene with the [fabric] mesh keys replaced and its relative paths made absolute."""
+    out, section = [], ""
+    for line in scene_text.splitlines():
+        header = re.match(r"^\s*\[+\s*([A-Za-z_]+)", line)
+        if header:
+            section = header.group(1)
+        if section == "fabric" and MESH_KEYS.match(line):
+            continue
+        line = re.sub(r'"(\.\./[^"]+)"', lambda m: '"%s"' % (scene_dir / m.group(1)).resolve(), line)
+        out.append(line)
+        if section == "fabric" and re.match(r"^\s*diameter_m\s*=", line):
+            out.extend(mesh_lines(mesh, level, base))
+    if mesh == "triangular" and not re.search(r"^\s*\[shear\]", scene_text, re.M):
+        out += ["", "[shear]", 'material = "%s"' % shear_table(scene_text, scene_dir)]
+    return "\n".join(out) + "\n"
+
+
+def run(fabform, scene_path, out_dir, extra):
+    out_dir.parent.mkdir(parents=True, exist_ok=True)
+    with open(stderr_of(out_dir), "w") as err:
+        status = subprocess.run([fabform, "run", str(scene_path), "--out", str(out_dir), "--quiet"] + extra,
+                                stderr=err, stdout=subprocess.DEVNULL).returncode
+    result = out_dir / "result.json"
+    return status, json.loads(result.read_text()) if result.exists() else None
+
+
+def stderr_of(out_dir):
+    return out_dir.with_name(out_dir.name + ".stderr.txt")  # fabform wants its folder to itself
+
+
+def row_of(mesh, level, result):
+    springs = result["fabric"]["springs"]
+    return {"mesh": mesh, "level": level, "nodes": result["fabric"]["nodes"], "springs": sum(springs.values()),
+            "solver": result["solver"],
+            "iterations": result["iterations"], "residual_N": "%.3g" % result["residual_N"],
+            "converged": result["converged"], "drape_coefficient": "%.4f" % result["drape_coefficient"],
+            "folds": result["drape"]["folds"], "solve_seconds": "%.2f" % result["solve_seconds"]}
+
+
+def tables(rows, levels):
+    """The Figure 9 table (level 1) and the DC of each mesh at every level."""
+    lines = ["Figure 9 (seed 000), measured: pin scene, level 1", "",
+             "| mesh | nodes | DC (%) | folds | iterations | time (s) |", "|---|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        if r["level"] == levels[0]:
+            lines.append("| %s | %d | %.2f | %d | %d | %s |" % (r["mesh"], r["nodes"], 100 * float(r["drape_coefficient"]),
+                                                          r["folds"], r["iterations"], r["solve_seconds"]))
+    lines += ["", "DC (%) under refinement (nodes in brackets); last column: the change between the two finest", "",
+              "| mesh | " + " | ".join("level %d" % L for L in levels) + " | finest change (points) |",
+              "|---|" + "---:|" * (len(levels) + 1)]
+    for mesh in MESHES:
+        by_level = {r["level"]: r for r in rows if r["mesh"] == mesh}
+        cells = ["%.2f (%d)" % (100 * float(by_level[L]["drape_coefficient"]), by_level[L]["nodes"]) if L in by_level
+                 else "-" for L in levels]
+        change = "-"
+        if len(levels) > 1 and levels[-1] in by_level and levels[-2] in by_level:
+            change = "%.2f" % (100 * abs(float(by_level[levels[-1]]["drape_coefficient"])
+                                         - float(by_level[levels[-2]]["drape_coefficient"])))
+        lines.append("| %s | %s | %s |" % (mesh, " | ".join(cells), change))
+    return "\n".join(lines) + "\n"
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--scene", default=str(ROOT / "scenes" / "pin.toml"))
+    parser.add_argument("--levels", default="1,2,4", help="refinement levels, comma-separated")
+    parser.add_argument("--solver", default=None, help="override the scene's solver")
+    parser.add_argument("--out", default=str(ROOT / "results" / "drape_meshes"))
+    parser.add_argument("--fabform", default=str(FABFORM), help="the fabform binary to run")
+    parser.add_argument("--smoke", action="store_true", help="tiny meshes, levels 1 and 2")
+    args = parser.parse_args(argv)
+    base = SMOKE if args.smoke else LEVEL_ONE
+    levels = [1, 2] if args.smoke else [int(v) for v in args.levels.split(",")]
+    scene_path = pathlib.Path(args.scene).resolve()
+    scene_text = scene_path.read_text()
+    out = pathlib.Path(args.out)
+    (out / "scenes").mkdir(parents=True, exist_ok=True)
+    extra = ["--solver", args.solver] if args.solver else []
+    rows, failed = [], []
+    for level in levels:
+        for mesh in MESHES:
+            name = "%s_%d" % (mesh, level)
+            path = out / "scenes" / (name + ".toml")
+            path.write_text(variant(scene_text, scene_path.parent, mesh, level, base))
+            status, result = run(args.fabform, path, out / "runs" / name, extra)
+            if result is None or status not in (0, 3):
+                failed.append("%s: exit %d, see %s" % (name, status, stderr_of(out / "runs" / name)))
+                continue
+            rows.append(row_of(mesh, level, result))
+            if not result["converged"]:
+                failed.append("%s: %s" % (name, result["message"]))
+            print("%-14s level %d: %5d nodes, DC %.2f %%, %s s" % (mesh, level, rows[-1]["nodes"],
+                  100 * float(rows[-1]["drape_coefficient"]), rows[-1]["solve_seconds"]), file=sys.stderr)
+    with open(out / "drape_meshes.csv", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=COLUMNS)
+        writer.writeheader()
+        writer.writerows(rows)
+    text = tables(rows, levels)
+    (out / "table.md").write_text(text)
+    print(text)
+    for line in failed:
+        print("drape_meshes: " + line, file=sys.stderr)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
