@@ -1,22 +1,36 @@
 #include "fabform/analysis/drape_figures.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "fabform/analysis/drape_coefficient.hpp"
 
 namespace fabform {
 namespace {
-// How far the flat specimen's own outline rises and falls about its centre: a lattice circle's
-// staircase, which no fold count should see as folds.
-double flat_outline_wiggle(const Fabric& fabric) {
-  const Eigen::Vector3d centre(fabric.spec().radius_m(), fabric.spec().radius_m(), 0.0);
-  double nearest = fabric.spec().radius_m(), farthest = 0.0;
-  for (int k = 0; k < fabric.node_count(); ++k) {
-    if (!fabric.on_perimeter(k)) continue;
-    const double r = (fabric.rest_position(k) - centre).head<2>().norm();
-    nearest = std::min(nearest, r), farthest = std::max(farthest, r);
+// The outline with each corner replaced by the mean of the corners within half a window either
+// side along it. A lattice circle's outline is a staircase of cell-sized steps, which a window
+// of two cells flattens; folds span many cells and keep their depth.
+std::vector<Eigen::Vector2d> smoothed(const std::vector<Eigen::Vector2d>& outline, double window_m) {
+  const std::size_t n = outline.size();
+  if (window_m <= 0.0 || n < 3) return outline;
+  std::vector<double> along(n + 1, 0.0);  // arc length to each corner, and round to the start again
+  for (std::size_t k = 0; k < n; ++k) along[k + 1] = along[k] + (outline[(k + 1) % n] - outline[k]).norm();
+  const double perimeter = along[n];
+  std::vector<Eigen::Vector2d> out(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    Eigen::Vector2d sum = outline[k];
+    int count = 1;
+    for (const int direction : {1, -1})
+      for (std::size_t step = 1; step < n; ++step) {
+        const std::size_t j = (k + n + static_cast<std::size_t>(direction) * step) % n;
+        double gap = std::abs(along[j] - along[k]);
+        gap = std::min(gap, perimeter - gap);
+        if (gap > 0.5 * window_m) break;
+        sum += outline[j], ++count;
+      }
+    out[k] = sum / count;
   }
-  return farthest - nearest;
+  return out;
 }
 }  // namespace
 
@@ -46,8 +60,11 @@ DrapeFigures drape_figures(const Fabric& fabric, const std::vector<Eigen::Vector
   const auto largest = std::max_element(
       shadow.outlines.begin(), shadow.outlines.end(),
       [](const auto& p, const auto& q) { return p.size() < q.size(); });
-  if (largest != shadow.outlines.end())
-    f.folds = count_folds(*largest, centre_m, std::max(0.02 * fabric.spec().radius_m(), flat_outline_wiggle(fabric)));
+  if (largest != shadow.outlines.end()) {
+    const bool lattice = fabric.spec().mesh != FabricSpec::Mesh::arc;
+    const double window = lattice ? 2.0 * std::max(fabric.spacing_warp(), fabric.spacing_weft()) : 0.0;
+    f.folds = count_folds(smoothed(*largest, window), centre_m, 0.02 * fabric.spec().radius_m());
+  }
   return f;
 }
 

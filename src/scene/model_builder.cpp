@@ -74,6 +74,7 @@ void add_gravity(const Scene& scene, const MaterialFile& warp, const MaterialFil
   require_support(scene, *model);
   const double density = areal_density(scene, warp, weft);
   model->loads = gravity_loads(model->fabric, density, scene.gravity.acceleration_m_s2);
+  model->areal_density_kg_m2 = density;
   model->modelled.push_back(gravity_term(density, scene.gravity.acceleration_m_s2));
 }
 

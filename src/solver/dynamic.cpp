@@ -31,6 +31,10 @@ std::string DynamicOptions::invalid_reason(std::string* field) const {
   return "";
 }
 
+double inertia_density(const Model& model, const DynamicOptions& options) {
+  return model.areal_density_kg_m2 > 0.0 ? model.areal_density_kg_m2 : options.areal_density_kg_m2;
+}
+
 std::vector<double> node_masses(const Model& model, double areal_density_kg_m2) {
   std::vector<double> mass = model.fabric.node_areas();
   for (double& m : mass) m *= areal_density_kg_m2;
@@ -98,8 +102,7 @@ class Dynamics {
       : model_(model),
         state_(state),
         options_(options),
-        mass_(node_masses(model, options.areal_density_kg_m2)),
-
+        mass_(node_masses(model, inertia_density(model, options))),
         step_(stable_time_step(model, mass_, options.time_step_fraction)),
         damping_(options.damping ? *options.damping : default_damping(model)) {
     if (state.velocity.size() != state.x.size())

@@ -21,7 +21,8 @@ namespace fabform {
 struct DynamicOptions {
   double tolerance_N = 1e-3;       // e > 0: stop when ‖V‖∞ ≤ e
   int max_iterations = 10'000'000;  // cap on time steps
-  // Inertia only: the rest does not depend on it. A typical fabric's 200 g/m².
+  // Inertia only: the rest does not depend on it. A typical fabric's 200 g/m². Used when the
+  // model has no weight; with gravity the fabric's own density moves it.
   double areal_density_kg_m2 = 0.2;
   // f in [0, 1); empty: 4 / (divisions along the longer side), near critical damping of the
   // slowest mode of a taut grid, so the step count to rest grows with the grid's size, not its square.
@@ -36,6 +37,10 @@ struct DynamicOptions {
 /// Each node's mass (kg): the areal density times the fabric area the node stands for, a
 /// quarter of the areas w·L of its springs (dx·dy inside, half on an edge, a quarter at a corner).
 std::vector<double> node_masses(const Model& model, double areal_density_kg_m2);
+
+/// The mass per area the dynamics moves (kg/m²): the fabric's when its weight is modelled, so
+/// that it falls at g; else the options' (inertia only, the rest does not depend on it).
+double inertia_density(const Model& model, const DynamicOptions& options);
 
 struct TimeStep {
   double seconds = 0.0;          // Δt used: the fraction of stability_limit
