@@ -120,6 +120,47 @@ INSTANTIATE_TEST_SUITE_P(
                "starts inside body"}),
     [](const auto& case_info) { return std::string(case_info.param.name); });
 
+// Bad drape scenes (issue 5): the shipped pin and Cusick scenes with one value made wrong.
+struct BadDrape {
+  const char* name;
+  const char* scene;      // scenes/NAME.toml
+  const char* overrides;  // --set arguments
+  const char* expected_in_message;
+};
+
+class RunCommandBadDrape : public RunCommand, public ::testing::WithParamInterface<BadDrape> {};
+
+TEST_P(RunCommandBadDrape, ExitsTwoWithOneLineAndWritesNothing) {
+  const BadDrape& bad = GetParam();
+  // A weightless copy of the denim: a zero density is refused where it is written.
+  dir.write("weightless.csv", "areal_density_kg_m2,0\nstrain,tension_N_per_m\n0,0\n1,500\n");
+  const std::string scene = test::source_path(std::string("scenes/") + bad.scene + ".toml");
+  std::string overrides = bad.overrides;
+  if (const auto at = overrides.find("WEIGHTLESS"); at != std::string::npos)
+    overrides.replace(at, 10, dir.path("weightless.csv"));
+  const Outcome o = run_fabform(dir, "run " + scene + " --out out " + overrides);
+  EXPECT_EQ(o.status, 2) << o.err;
+  EXPECT_EQ(line_count(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find(bad.expected_in_message), std::string::npos) << o.err;
+  EXPECT_FALSE(exists("out")) << "an output folder was created for bad input";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Contract, RunCommandBadDrape,
+    ::testing::Values(
+        BadDrape{"CircleSmallerThanTheDisc", "cusick",
+                 "--set fabric.diameter_m=0.15 --set fabric.origin_m=[-0.075,-0.075,0.002] "
+                 "--set constraint.0.nearest_m=[0.075,0.075]",
+                 "the 0.15 m circle does not cover body 'disc'"},
+        BadDrape{"CircleOffTheDisc", "cusick", "--set fabric.origin_m=[0.0,0.0,0.002]", "does not cover body 'disc'"},
+        BadDrape{"PinOutsideTheFabric", "pin", "--set constraint.0.nearest_m=[0.29,0.29]",
+                 "--set: constraint.0.nearest_m: must lie on the fabric: within 0.15 m of its centre"},
+        BadDrape{"SupportThatIsNoBody", "cusick", "--set 'drape.support=\"table\"'", "no body named 'table'"},
+        BadDrape{"TriangularWithoutShearTable", "cusick", "--set 'fabric.mesh=\"triangular\"'",
+                 "a triangular mesh has diagonal springs"},
+        BadDrape{"ZeroDensityWithGravity", "pin", "--set 'fabric.warp=\"WEIGHTLESS\"'", "weightless.csv:1:"}),
+    [](const auto& case_info) { return std::string(case_info.param.name); });
+
 // Tensions near the largest double on springs 5 m wide overflow at the start: the run stops as
 // a numerical failure naming the node and iteration, exits 4, and still writes its results.
 TEST_F(RunCommand, OverflowIsANumericalFailureWithItsResultsWritten) {
