@@ -1,6 +1,6 @@
 // The total potential energy and the node forces every solver uses are one model: with the
-// stretch of measured tables and the fabric's weight, −∂Π/∂x_k is node_force at every node,
-// checked by central differences.
+// stretch of measured tables, seed 004's shear and bend springs and the fabric's weight,
+// −∂Π/∂x_k is node_force at every node, checked by central differences.
 #include "fabform/model/potential_energy.hpp"
 
 #include <gtest/gtest.h>
@@ -28,21 +28,15 @@ Model weighed_fabric(const Fabric& grid, const std::string& fabric, double densi
                {}};
 }
 
-TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
-  const Fabric grid({0.1, 0.08, 6, 4});
-  const Model model = weighed_fabric(grid, "white-swim-solid", 0.204);
-  // Stretched by 5–15 %, away from the tables' kinks at 0 strain, and crumpled out of plane.
-  std::mt19937 rng(11u);
-  std::uniform_real_distribution<double> jitter(-0.001, 0.001);
-  std::vector<Eigen::Vector3d> x;
-  for (int k = 0; k < grid.node_count(); ++k)
-    x.push_back(1.1 * grid.rest_position(k) + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng)));
-  // h: truncation error ~h²·Π''' and rounding ~ε·Π/h balance near 1e-7 m for these forces;
-  // the tolerance is relative to the largest force, 1e-6.
+// −∂Π/∂x_k against node_force at every node and axis. h: truncation error ~h²·Π''' and
+// rounding ~ε·Π/h balance near 1e-7 m for these forces; the tolerance is relative to the
+// largest force, 1e-6.
+void expect_forces_are_minus_the_gradient(const Model& model, const std::vector<Eigen::Vector3d>& x) {
   const double h = 1e-7;
   double largest = 0.0;
-  for (int k = 0; k < grid.node_count(); ++k) largest = std::max(largest, node_force(model, x, k).norm());
-  for (int k = 0; k < grid.node_count(); ++k) {
+  for (int k = 0; k < model.node_count(); ++k) largest = std::max(largest, node_force(model, x, k).norm());
+  ASSERT_GT(largest, 0.0);
+  for (int k = 0; k < model.node_count(); ++k) {
     const Eigen::Vector3d force = node_force(model, x, k);
     for (int axis = 0; axis < 3; ++axis) {
       std::vector<Eigen::Vector3d> plus = x, minus = x;
@@ -50,6 +44,41 @@ TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
       const double slope = (potential_energy(model, plus) - potential_energy(model, minus)) / (2 * h);
       EXPECT_NEAR(-slope, force[axis], 1e-6 * largest) << "node " << k << " axis " << axis;
     }
+  }
+}
+
+// Stretched by 5–15 %, away from the tables' kinks at 0 strain, and crumpled out of plane.
+std::vector<Eigen::Vector3d> stretched_and_crumpled(const Fabric& fabric, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.001, 0.001);
+  std::vector<Eigen::Vector3d> x;
+  for (int k = 0; k < fabric.node_count(); ++k)
+    x.push_back(1.1 * fabric.rest_position(k) + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng)));
+  return x;
+}
+
+TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
+  const Fabric grid({0.1, 0.08, 6, 4});
+  expect_forces_are_minus_the_gradient(weighed_fabric(grid, "white-swim-solid", 0.204),
+                                       stretched_and_crumpled(grid, 11u));
+}
+
+// Seed 004's shear springs (the knit's measured bias table) and bend springs (linear in tension
+// and compression, as the model builder makes them), on seed 000's circles.
+TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithShearAndBendSprings) {
+  FabricSpec lattice{0.1, 0.1, 6, 6};
+  lattice.shape = FabricSpec::Shape::circle;
+  FabricSpec arc = lattice;
+  arc.mesh = FabricSpec::Mesh::arc, arc.rings = 3, arc.spokes = 8;
+  for (FabricSpec spec : {lattice, arc}) {
+    spec.shear_springs = true;
+    spec.bend_springs = true;
+    const Fabric fabric(spec);
+    Model model = weighed_fabric(fabric, "white-swim-solid", 0.204);
+    model.shear = read_material_table(test::source_path("materials/white-swim-solid_shear.csv"));
+    model.bend = TensionTable({{-1.0, -5.0}, {0.0, 0.0}, {1.0, 5.0}}, "bend");
+    SCOPED_TRACE(spec.mesh == FabricSpec::Mesh::arc ? "arc" : "lattice");
+    expect_forces_are_minus_the_gradient(model, stretched_and_crumpled(fabric, 12u));
   }
 }
 
