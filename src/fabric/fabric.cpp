@@ -37,11 +37,11 @@ struct MergedSide {
   int faces;
 };
 
-std::vector<MergedSide> merged_sides(const std::vector<Face>& faces, const std::vector<double>& area) {
+std::vector<MergedSide> merged_sides(const std::vector<Face>& faces, const std::vector<double>& areas) {
   std::vector<std::pair<Edge, double>> all;
   all.reserve(4 * faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f)
-    for (const auto& side : sides_of(faces[f], area[f])) all.push_back(side);
+    for (const auto& side : sides_of(faces[f], areas[f])) all.push_back(side);
   std::sort(all.begin(), all.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
   std::vector<MergedSide> merged;
   for (const auto& [side, area] : all) {
@@ -77,6 +77,7 @@ Fabric::Fabric(const FabricSpec& spec) : spec_(spec) {
     add_bend_springs();
     index_springs();
   }
+  add_hinges();
   mark_perimeter();
   colour_nodes();
 }
@@ -175,6 +176,50 @@ void Fabric::index_springs() {
   }
 }
 
+// Discrete-shell hinges: one across every side two faces share, each face's far point the
+// midpoint of its far side (a triangle's far corner). Indexed by every node a hinge reaches.
+void Fabric::add_hinges() {
+  const auto n = static_cast<std::size_t>(node_count());
+  hinge_offset_.assign(n + 1, 0);
+  if (spec_.hinges) {
+    std::vector<std::pair<Edge, int>> sides;  // (side, face)
+    for (std::size_t face = 0; face < faces_.size(); ++face)
+      for (const auto& [side, share] : sides_of(faces_[face], 0.0)) sides.push_back({side, static_cast<int>(face)});
+    std::sort(sides.begin(), sides.end());
+    for (std::size_t k = 0; k + 1 < sides.size(); ++k) {
+      if (sides[k].first != sides[k + 1].first) continue;
+      const auto [p, q] = sides[k].first;
+      Hinge h;
+      h.edge = {p, q};
+      double area = 0.0;
+      for (int w = 0; w < 2; ++w) {
+        const auto face = static_cast<std::size_t>(sides[k + static_cast<std::size_t>(w)].second);
+        const Face& f = faces_[face];
+        std::vector<int> far;
+        for (int c = 0; c < f.corners; ++c)
+          if (f.corner[static_cast<std::size_t>(c)] != p && f.corner[static_cast<std::size_t>(c)] != q)
+            far.push_back(f.corner[static_cast<std::size_t>(c)]);
+        h.wing[static_cast<std::size_t>(w)] = {far.front(), far.back()};
+        area += face_areas_[face];
+      }
+      h.shape_factor = (rest_position(q) - rest_position(p)).squaredNorm() / area;
+      hinges_.push_back(h);
+    }
+  }
+  const auto reach = [](const Hinge& h) {
+    return std::array<int, 6>{h.edge[0], h.edge[1], h.wing[0][0], h.wing[0][1], h.wing[1][0], h.wing[1][1]};
+  };
+  std::vector<std::vector<int>> at(n);
+  for (std::size_t i = 0; i < hinges_.size(); ++i)
+    for (const int node : reach(hinges_[i]))
+      if (at[static_cast<std::size_t>(node)].empty() || at[static_cast<std::size_t>(node)].back() != static_cast<int>(i))
+        at[static_cast<std::size_t>(node)].push_back(static_cast<int>(i));
+  for (std::size_t k = 0; k < n; ++k) {
+    hinge_offset_[k + 1] = hinge_offset_[k] + at[k].size();
+    hinge_ids_.insert(hinge_ids_.end(), at[k].begin(), at[k].end());
+  }
+}
+
 // The perimeter is where a face's side has no face on its other side.
 void Fabric::mark_perimeter() {
   perimeter_.assign(static_cast<std::size_t>(node_count()), 0);
@@ -189,12 +234,20 @@ void Fabric::colour_nodes() {
   std::vector<char> taken;
   for (int k = 0; k < node_count(); ++k) {
     taken.assign(taken.size(), 0);
-    for (const int s : springs_at(k)) {
-      const Spring& spring = springs_[static_cast<std::size_t>(s)];
-      const int c = colour[static_cast<std::size_t>(spring.a == k ? spring.b : spring.a)];
-      if (c < 0) continue;
+    const auto take = [&](int other) {
+      const int c = colour[static_cast<std::size_t>(other)];
+      if (c < 0) return;
       if (static_cast<std::size_t>(c) >= taken.size()) taken.resize(static_cast<std::size_t>(c) + 1, 0);
       taken[static_cast<std::size_t>(c)] = 1;
+    };
+    for (const int s : springs_at(k)) {
+      const Spring& spring = springs_[static_cast<std::size_t>(s)];
+      take(spring.a == k ? spring.b : spring.a);
+    }
+    for (const int i : hinges_at(k)) {
+      const Hinge& h = hinges_[static_cast<std::size_t>(i)];
+      for (const int other : {h.edge[0], h.edge[1], h.wing[0][0], h.wing[0][1], h.wing[1][0], h.wing[1][1]})
+        if (other != k) take(other);
     }
     const auto free = std::find(taken.begin(), taken.end(), 0);
     const int c = static_cast<int>(free - taken.begin());

@@ -4,12 +4,17 @@
 
 #include "fabform/fabric/spring.hpp"
 #include "fabform/model/external_loads.hpp"
+#include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/stretch_forces.hpp"
 
 namespace fabform {
 
+double elastic_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
+  return stretch_energy(model, x) + bending_energy(model, x);
+}
+
 double potential_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
-  return stretch_energy(model, x) + load_energy(model.loads, x);
+  return elastic_energy(model, x) + load_energy(model.loads, x);
 }
 
 namespace {
@@ -32,7 +37,8 @@ double node_spring_energy(const Model& model, const std::vector<Eigen::Vector3d>
 double node_energy_change(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
                           const Eigen::Vector3d& at) {
   const auto k = static_cast<std::size_t>(node);
-  double change = node_spring_energy(model, x, node, at) - node_spring_energy(model, x, node, x[k]);
+  double change = node_spring_energy(model, x, node, at) - node_spring_energy(model, x, node, x[k]) +
+                  node_bending_energy(model, x, node, at) - node_bending_energy(model, x, node, x[k]);
   if (!model.loads.empty()) change -= model.loads[k].dot(at - x[k]);
   return change;
 }

@@ -175,11 +175,18 @@ void add_shear(const Scene& scene, Model* model) {
 // linear through zero in both directions, T = k·ε per width.
 void add_bending(const Scene& scene, Model* model) {
   if (!scene.bending.on) return;
-  const double k = scene.bending.stiffness_N_m;
-  model->bend = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "bending");
   char text[200];
-  std::snprintf(text, sizeof text,
-                "bending: skip-one bend springs, linear in tension and compression, %.6g N/m per width", k);
+  if (scene.bending.rigidity_N_m > 0.0) {
+    model->bending_rigidity_N_m = scene.bending.rigidity_N_m;
+    std::snprintf(text, sizeof text,
+                  "bending: discrete-shell hinges across %zu face sides, flexural rigidity %.6g N·m",
+                  model->fabric.hinges().size(), scene.bending.rigidity_N_m);
+  } else {
+    const double k = scene.bending.stiffness_N_m;
+    model->bend = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "bending");
+    std::snprintf(text, sizeof text,
+                  "bending: skip-one bend springs, linear in tension and compression, %.6g N/m per width", k);
+  }
   model->modelled.push_back(text);
 }
 
@@ -206,10 +213,10 @@ void check_drape_support(const Scene& scene, const Model& model) {
 }
 
 std::string stretch_term(const Fabric& fabric) {
-  std::string mesh = fabric.spec().shape == FabricSpec::Shape::rectangle
-                         ? "rectangle"
-                         : std::string(to_string(fabric.spec().mesh)) + " circle";
-  return "stretch: warp and weft springs of a " + mesh + " of " + std::to_string(fabric.node_count()) +
+  const std::string outline = fabric.spec().shape == FabricSpec::Shape::rectangle
+                                  ? "rectangle"
+                                  : "circle meshed " + std::string(to_string(fabric.spec().mesh));
+  return "stretch: warp and weft springs of a " + outline + " of " + std::to_string(fabric.node_count()) +
          " nodes, tension-only piecewise-linear tables";
 }
 

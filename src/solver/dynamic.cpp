@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/thread_count.hpp"
@@ -60,6 +61,22 @@ double spring_stiffness_bound(const Model& model, const Spring& s) {
   return s.width * steepest_slope(model.table(s.kind)) / s.rest_length;
 }
 
+// A hinge's stiffness 2·B·s·∇θ∇θᵀ in the flat fabric: half of each node's row sum, which is
+// what a spring's k is to the bound below (its block's row sums are 2k).
+void add_hinge_stiffness(const Model& model, std::vector<double>* stiffness) {
+  if (!model.bending_rigidity_N_m) return;
+  std::vector<Eigen::Vector3d> rest;
+  for (int k = 0; k < model.node_count(); ++k) rest.push_back(model.fabric.rest_position(k));
+  for (const Hinge& h : model.fabric.hinges()) {
+    const HingeGradient g = hinge_gradient(h, rest);
+    double sum = 0.0;
+    for (int k = 0; k < g.count; ++k) sum += g.d_theta[static_cast<std::size_t>(k)].norm();
+    for (int k = 0; k < g.count; ++k)
+      (*stiffness)[static_cast<std::size_t>(g.node[static_cast<std::size_t>(k)])] +=
+          *model.bending_rigidity_N_m * h.shape_factor * g.d_theta[static_cast<std::size_t>(k)].norm() * sum;
+  }
+}
+
 }  // namespace
 
 TimeStep stable_time_step(const Model& model, const std::vector<double>& masses, double fraction) {
@@ -71,6 +88,7 @@ TimeStep stable_time_step(const Model& model, const std::vector<double>& masses,
     stiffness[static_cast<std::size_t>(s.b)] += k;
     stiffest = std::max(stiffest, k);
   }
+  add_hinge_stiffness(model, &stiffness);
   TimeStep step;
   step.stability_limit = step.seed_limit = std::numeric_limits<double>::infinity();
   double lightest = std::numeric_limits<double>::infinity();

@@ -1,7 +1,9 @@
 #include "solver/reduced_hessian.hpp"
 
+#include <cmath>
 #include <cstddef>
 
+#include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/spring_energy.hpp"
 #include "fabform/thread_count.hpp"
 
@@ -30,6 +32,21 @@ void add_spring(const FreeDirections& d, int a, int b, const Eigen::Matrix3d& k,
   else add_block(d, a, b, -k, out);
 }
 
+// A hinge adds 2·B·s·max(cos θ, 0)·∇θ∇θᵀ over the nodes it reaches (the Gauss–Newton part of
+// its Hessian: positive semi-definite, and exact where the fabric is flat, θ = 0); each pair
+// once, below the diagonal.
+void add_hinge(const FreeDirections& d, const HingeGradient& g, double scale, Triplets* out) {
+  for (int r = 0; r < g.count; ++r)
+    for (int c = 0; c <= r; ++c) {
+      const int a = g.node[static_cast<std::size_t>(r)], b = g.node[static_cast<std::size_t>(c)];
+      const Eigen::Matrix3d k =
+          scale * g.d_theta[static_cast<std::size_t>(r)] * g.d_theta[static_cast<std::size_t>(c)].transpose();
+      if (r == c) add_block(d, a, a, k, out);
+      else if (d.offset[static_cast<std::size_t>(a)] > d.offset[static_cast<std::size_t>(b)]) add_block(d, a, b, k, out);
+      else add_block(d, b, a, k.transpose(), out);
+    }
+}
+
 }  // namespace
 
 Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
@@ -48,6 +65,12 @@ Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
   }
   for (std::size_t i = 0; i < springs.size(); ++i)
     add_spring(directions, springs[i].a, springs[i].b, stiffness[i], &triplets);
+  if (model.bending_rigidity_N_m)
+    for (const Hinge& h : model.fabric.hinges()) {
+      const double bent = std::cos(dihedral_angle(hinge_points(h, x)));
+      if (bent > 0.0)
+        add_hinge(directions, hinge_gradient(h, x), 2.0 * *model.bending_rigidity_N_m * h.shape_factor * bent, &triplets);
+    }
   Eigen::SparseMatrix<double> hessian(directions.unknowns(), directions.unknowns());
   hessian.setFromTriplets(triplets.begin(), triplets.end());
   return hessian;

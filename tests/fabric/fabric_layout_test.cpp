@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -111,6 +113,42 @@ TEST_P(EveryLayout, NoSpringJoinsTwoNodesOfOneColour) {
   for (const int c : colour) EXPECT_GE(c, 0);
   for (const Spring& s : fabric.springs())
     EXPECT_NE(colour[static_cast<std::size_t>(s.a)], colour[static_cast<std::size_t>(s.b)]);
+}
+
+// Hinges: one across every side two faces share, its wings the faces' far sides; relax moves
+// the nodes of a colour at once, so no hinge may reach two of them.
+TEST_P(EveryLayout, HingesJoinTheTwoFacesOfEachInnerSideAndCrossColours) {
+  FabricSpec spec = GetParam();
+  spec.hinges = true;
+  const Fabric fabric(spec);
+  std::map<std::pair<int, int>, int> faces_at_side;
+  for (const Face& f : fabric.faces())
+    for (int c = 0; c < f.corners; ++c) {
+      const int p = f.corner[static_cast<std::size_t>(c)], q = f.corner[static_cast<std::size_t>((c + 1) % f.corners)];
+      ++faces_at_side[{std::min(p, q), std::max(p, q)}];
+    }
+  std::set<std::pair<int, int>> inner;
+  for (const auto& [side, count] : faces_at_side)
+    if (count == 2) inner.insert(side);
+  std::set<std::pair<int, int>> hinged;
+  for (const Hinge& h : fabric.hinges()) hinged.insert({h.edge[0], h.edge[1]});
+  EXPECT_EQ(hinged, inner);
+  EXPECT_EQ(fabric.hinges().size(), inner.size());
+  std::vector<int> colour(static_cast<std::size_t>(fabric.node_count()), -1);
+  for (std::size_t c = 0; c < fabric.colours().size(); ++c)
+    for (const int k : fabric.colours()[c]) colour[static_cast<std::size_t>(k)] = static_cast<int>(c);
+  for (const Hinge& h : fabric.hinges()) {
+    EXPECT_GT(h.shape_factor, 0.0);
+    const std::set<int> reach = {h.edge[0], h.edge[1], h.wing[0][0], h.wing[0][1], h.wing[1][0], h.wing[1][1]};
+    std::set<int> colours;
+    for (const int k : reach) colours.insert(colour[static_cast<std::size_t>(k)]);
+    EXPECT_EQ(colours.size(), reach.size()) << "hinge " << h.edge[0] << "-" << h.edge[1];
+    for (const int k : reach) {
+      const auto at = fabric.hinges_at(k);
+      EXPECT_NE(std::find_if(at.begin(), at.end(), [&](int i) { return &fabric.hinges()[static_cast<std::size_t>(i)] == &h; }),
+                at.end());
+    }
+  }
 }
 
 // Shear: both diagonals of each four-sided face, each family tiling those faces once.

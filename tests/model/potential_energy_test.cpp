@@ -10,6 +10,7 @@
 
 #include "fabform/material/material_csv.hpp"
 #include "fabform/model/external_loads.hpp"
+#include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/stretch_forces.hpp"
 #include "test_paths.hpp"
 
@@ -79,6 +80,37 @@ TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithShearAndBendSprings) {
     model.bend = TensionTable({{-1.0, -5.0}, {0.0, 0.0}, {1.0, 5.0}}, "bend");
     SCOPED_TRACE(spec.mesh == FabricSpec::Mesh::arc ? "arc" : "lattice");
     expect_forces_are_minus_the_gradient(model, stretched_and_crumpled(fabric, 12u));
+  }
+}
+
+// Discrete-shell hinges with a measured flexural rigidity, crumpled enough that they bend.
+TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithHinges) {
+  FabricSpec spec{0.1, 0.1, 0, 0};
+  spec.shape = FabricSpec::Shape::circle, spec.mesh = FabricSpec::Mesh::arc, spec.rings = 3, spec.spokes = 8;
+  spec.hinges = true;
+  const Fabric fabric(spec);
+  Model model = weighed_fabric(fabric, "white-swim-solid", 0.204);
+  model.bending_rigidity_N_m = 5.56e-5;
+  std::vector<Eigen::Vector3d> x = stretched_and_crumpled(fabric, 13u);
+  for (auto& p : x) p.z() += 0.2 * (p.x() - 0.05) * (p.x() - 0.05) / 0.05;  // and curved
+  ASSERT_GT(bending_energy(model, x), 1e-3 * elastic_energy(model, x));
+  expect_forces_are_minus_the_gradient(model, x);
+}
+
+// Relax judges a node's step by its own energy change; with hinges that includes theirs.
+TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWholeWithHinges) {
+  FabricSpec spec{0.1, 0.08, 5, 4};
+  spec.hinges = true;
+  const Fabric grid(spec);
+  Model model = weighed_fabric(grid, "ivory-rib-knit", 0.276);
+  model.bending_rigidity_N_m = 4e-5;
+  const std::vector<Eigen::Vector3d> x = stretched_and_crumpled(grid, 14u);
+  for (const int node : {0, grid.node(2, 1), grid.node(4, 3)}) {
+    const Eigen::Vector3d at = x[static_cast<std::size_t>(node)] + Eigen::Vector3d(0.001, -0.0005, -0.002);
+    std::vector<Eigen::Vector3d> moved = x;
+    moved[static_cast<std::size_t>(node)] = at;
+    const double whole = potential_energy(model, moved) - potential_energy(model, x);
+    EXPECT_NEAR(node_energy_change(model, x, node, at), whole, 1e-9 * std::abs(whole)) << node;
   }
 }
 

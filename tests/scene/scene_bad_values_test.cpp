@@ -81,11 +81,13 @@ Section fabric_section(Base base) {
   return {"fabric", "[fabric]", outline};
 }
 
-// The drape test's sections, in the circles' scenes: the dome is the support.
+// The drape test's sections, in the circles' scenes: the dome is the support; the circle bends
+// with seed 004's bend springs, the arc mesh with hinges.
 std::vector<Section> drape_sections(Base base) {
   if (base != Base::circle && base != Base::arc) return {};
+  const Entry bending = base == Base::circle ? Entry{"stiffness_N_m", "0.5"} : Entry{"rigidity_N_m", "5e-5"};
   return {{"shear", "[shear]", {{"material", "\"../materials/synthetic/linear-500.csv\""}}},
-          {"bending", "[bending]", {{"stiffness_N_m", "0.5"}}},
+          {"bending", "[bending]", {bending}},
           {"drape", "[drape]", {{"support", "\"dome\""}}}};
 }
 
@@ -283,8 +285,12 @@ const std::vector<KeyRow>& key_table() {
       {"shear.material",                 T::text,      circle, R, _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
       {"bending",                        T::table,     circle, A, _,  _,   _,   _,    "", {}},
-      {"bending.stiffness_N_m",          T::number,    circle, R, R,  R,   R,   _,    "",
-       {{"cap", "1e9", A, kSame}, {"beyond_cap", "1.1e9", R, kSame}}},
+      {"bending.stiffness_N_m",          T::number,    circle, _, R,  R,   R,   _,    "",
+       {{"cap", "1e9", A, kSame}, {"beyond_cap", "1.1e9", R, kSame}, {"missing", kRemove, R, "bending"},
+        {"and_rigidity", "0.5\nrigidity_N_m = 5e-5", R, "bending"}}},
+      {"bending.rigidity_N_m",           T::number,    arc,  _,   R,  R,   R,   _,    "",
+       {{"cap", "1e3", A, kSame}, {"beyond_cap", "1001.0", R, kSame}, {"missing", kRemove, R, "bending"},
+        {"measured_denim", "6.42e-5", A, kSame}}},
       {"drape",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
       // No support: a pin test, A_disc = 0.
       {"drape.support",                  T::text,      circle, A, _,  _,   _,   R,    "",
@@ -657,7 +663,7 @@ TEST(SceneBadValueTable, ListsEveryKeyTheParserKnows) {
       {Base::lift, ""},          {Base::lift, "scene"},  {Base::lift, "fabric"}, {Base::lift, "body.0"},
       {Base::lift, "constraint.0"}, {Base::lift, "initial"}, {Base::lift, "solver"}, {Base::lift, "output"},
       {Base::wrap, "initial"},   {Base::circle, "fabric"}, {Base::arc, "fabric"},  {Base::circle, "shear"},
-      {Base::circle, "bending"}, {Base::circle, "drape"}};
+      {Base::circle, "bending"}, {Base::arc, "bending"},  {Base::circle, "drape"}};
   for (const auto& [base, section] : sections) {
     const std::set<std::string> known = known_keys(base_scene(base), section);
     EXPECT_FALSE(known.empty()) << "no list of known keys for section '" << section << "'";

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "fabform/fabric/fabric_layout.hpp"
+#include "fabform/fabric/hinge.hpp"
 
 namespace fabform {
 
@@ -54,14 +55,21 @@ class Fabric {
     return {spring_ids_.data() + spring_offset_[k], spring_ids_.data() + spring_offset_[k + 1]};
   }
 
+  /// The bending hinges (FabricSpec::hinges), and those that reach a node (indices into hinges()).
+  const std::vector<Hinge>& hinges() const { return hinges_; }
+  SpringIndices hinges_at(int node) const {
+    const auto k = static_cast<std::size_t>(node);
+    return {hinge_ids_.data() + hinge_offset_[k], hinge_ids_.data() + hinge_offset_[k + 1]};
+  }
+
   /// The area of fabric each node stands for (m²): its faces' areas shared equally among
   /// their corners, so they sum to flat_area().
   std::vector<double> node_areas() const;
   /// The flat fabric's area (m²), the sum of its faces.
   double flat_area() const { return flat_area_; }
 
-  /// Nodes grouped so that no spring joins two nodes of a group: the nodes of one group can
-  /// move at once, independently. The checkerboard for warp and weft springs alone.
+  /// Nodes grouped so that no spring or hinge joins two nodes of a group: the nodes of one
+  /// group can move at once, independently. The checkerboard for warp and weft springs alone.
   const std::vector<std::vector<int>>& colours() const { return colours_; }
 
   /// Lattice indices: (i, j) on a rectangle or a circle's lattice, (ring, spoke) on an arc mesh
@@ -85,6 +93,7 @@ class Fabric {
   void add_edge_springs();
   void add_shear_springs();
   void add_bend_springs();
+  void add_hinges();
   void index_springs();
   void mark_perimeter();
   void colour_nodes();
@@ -101,6 +110,9 @@ class Fabric {
   std::vector<Spring> springs_;
   std::vector<std::size_t> spring_offset_;
   std::vector<int> spring_ids_;
+  std::vector<Hinge> hinges_;
+  std::vector<std::size_t> hinge_offset_;
+  std::vector<int> hinge_ids_;
   std::vector<unsigned char> perimeter_;
   std::vector<std::vector<int>> colours_;
 };

@@ -30,6 +30,7 @@ struct FabricSpec {
   int spokes = 0;  // arc: radial lines, nodes on each ring
   bool shear_springs = false;  // both diagonals of every four-sided cell (implied by triangular)
   bool bend_springs = false;   // a spring over every two consecutive springs in line
+  bool hinges = false;         // a bending hinge across every side two faces share
 
   /// Why the spec cannot make a fabric, or "".
   std::string invalid_reason() const;

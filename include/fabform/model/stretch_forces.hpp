@@ -12,7 +12,7 @@
 namespace fabform {
 
 /// R at `node` with the node moved to `at` and every other node where `x` has it: its springs'
-/// forces plus its constant load.
+/// and hinges' forces plus its constant load.
 Eigen::Vector3d node_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
                               const Eigen::Vector3d& at);
 

@@ -1,0 +1,18 @@
+#pragma once
+// A bending hinge: two faces of the fabric that share a side. Bending the fabric across that
+// side turns one face against the other by the dihedral angle θ, which the discrete-shell
+// bending energy B·(|e|² / (A₁ + A₂))·θ² (for small θ) penalises (Grinspun et al. 2003), B the
+// fabric's flexural rigidity (N·m): for a square cell bent across a side, B·κ²/2 per area. A four-sided face's far side stands in for its far corner: its
+// midpoint, the mean of two nodes.
+#include <array>
+
+namespace fabform {
+
+struct Hinge {
+  std::array<int, 2> edge = {0, 0};  // the shared side's nodes
+  // Each face's far point as the mean of two nodes (a triangle's far corner twice).
+  std::array<std::array<int, 2>, 2> wing = {{{0, 0}, {0, 0}}};
+  double shape_factor = 0.0;  // |e|² / (A₁ + A₂) in the flat fabric (dimensionless)
+};
+
+}  // namespace fabform
