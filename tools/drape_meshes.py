@@ -8,9 +8,9 @@ can see which mesh gives which DC, at what cost, and whether the DC settles unde
 
 What it does: for each mesh and each refinement level it writes a copy of the scene (default
 scenes/pin.toml) with the [fabric] mesh keys replaced, runs `build/fabform run` on it and reads
-result.json. Level 1 is seed 000's comparison: divisions 24 for the lattices (437 nodes) against
-15 rings on 32 spokes for the arc mesh (481 nodes); level L multiplies divisions, rings and
-spokes by L. The triangular mesh's diagonal springs follow the fabric's shear table
+result.json. Level 1 is by default seed 000's comparison: divisions 24 for the lattices (437 nodes
+on the 30 cm circle) against 15 rings on 32 spokes for the arc mesh (481 nodes); level L
+multiplies divisions, rings and spokes by L. The triangular mesh's diagonal springs follow the fabric's shear table
 (materials/FABRIC_shear.csv next to its warp table), added as a [shear] section.
 
 Writes into --out (default results/drape_meshes): drape_meshes.csv (one row a run), table.md
@@ -21,6 +21,7 @@ Usage (after tools/setup.sh, from anywhere):
   /usr/bin/python3 tools/drape_meshes.py                 # levels 1, 2, 4: about 15 minutes
   /usr/bin/python3 tools/drape_meshes.py --levels 1      # Figure 9 alone: seconds
   /usr/bin/python3 tools/drape_meshes.py --smoke         # the test suite's check: tiny meshes
+  /usr/bin/python3 tools/drape_meshes.py --scene scenes/cusick.toml --divisions 40 --rings 20 --spokes 64 --levels 1,2,3
 Standard library only.
 """
 import argparse
@@ -95,9 +96,9 @@ def row_of(mesh, level, result):
             "folds": result["drape"]["folds"], "solve_seconds": "%.2f" % result["solve_seconds"]}
 
 
-def tables(rows, levels):
+def tables(rows, levels, scene_name):
     """The Figure 9 table (level 1) and the DC of each mesh at every level."""
-    lines = ["Figure 9 (seed 000), measured: pin scene, level 1", "",
+    lines = ["Figure 9 (seed 000), measured: %s, level %d" % (scene_name, levels[0]), "",
              "| mesh | nodes | DC (%) | folds | iterations | time (s) |", "|---|---:|---:|---:|---:|---:|"]
     for r in rows:
         if r["level"] == levels[0]:
@@ -122,12 +123,16 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--scene", default=str(ROOT / "scenes" / "pin.toml"))
     parser.add_argument("--levels", default="1,2,4", help="refinement levels, comma-separated")
+    parser.add_argument("--divisions", type=int, default=LEVEL_ONE["divisions"], help="lattice divisions at level 1")
+    parser.add_argument("--rings", type=int, default=LEVEL_ONE["rings"], help="arc mesh rings at level 1")
+    parser.add_argument("--spokes", type=int, default=LEVEL_ONE["spokes"], help="arc mesh spokes at level 1")
+    parser.add_argument("--meshes", default=",".join(MESHES), help="which meshes, comma-separated")
     parser.add_argument("--solver", default=None, help="override the scene's solver")
     parser.add_argument("--out", default=str(ROOT / "results" / "drape_meshes"))
     parser.add_argument("--fabform", default=str(FABFORM), help="the fabform binary to run")
     parser.add_argument("--smoke", action="store_true", help="tiny meshes, levels 1 and 2")
     args = parser.parse_args(argv)
-    base = SMOKE if args.smoke else LEVEL_ONE
+    base = SMOKE if args.smoke else {"divisions": args.divisions, "rings": args.rings, "spokes": args.spokes}
     levels = [1, 2] if args.smoke else [int(v) for v in args.levels.split(",")]
     scene_path = pathlib.Path(args.scene).resolve()
     scene_text = scene_path.read_text()
@@ -136,7 +141,9 @@ def main(argv=None):
     extra = ["--solver", args.solver] if args.solver else []
     rows, failed = [], []
     for level in levels:
-        for mesh in MESHES:
+        for mesh in args.meshes.split(","):
+            if mesh not in MESHES:
+                sys.exit("drape_meshes: --meshes: no mesh named '%s' (%s)" % (mesh, ", ".join(MESHES)))
             name = "%s_%d" % (mesh, level)
             path = out / "scenes" / (name + ".toml")
             path.write_text(variant(scene_text, scene_path.parent, mesh, level, base))
@@ -153,7 +160,7 @@ def main(argv=None):
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
         writer.writerows(rows)
-    text = tables(rows, levels)
+    text = tables(rows, levels, scene_path.name)
     (out / "table.md").write_text(text)
     print(text)
     for line in failed:
