@@ -38,6 +38,7 @@ MESHES = ("quadrangular", "triangular", "arc")
 LEVEL_ONE = {"divisions": 24, "rings": 15, "spokes": 32}  # seed 000: similar numbers of nodes
 SMOKE = {"divisions": 8, "rings": 4, "spokes": 12}
 MESH_KEYS = re.compile(r"^\s*(mesh|divisions|rings|spokes)\s*=")
+PATH_KEY = re.compile(r'^(\s*(?:warp|weft|mesh|material)\s*=\s*)"([^"]+)"')  # relative to the scene
 COLUMNS = ["mesh", "level", "nodes", "springs", "solver", "iterations", "residual_N", "converged",
            "drape_coefficient", "folds", "solve_seconds"]
 
@@ -65,7 +66,7 @@ def variant(scene_text, scene_dir, mesh, level, base):
             section = header.group(1)
         if section == "fabric" and MESH_KEYS.match(line):
             continue
-        line = re.sub(r'"(\.\./[^"]+)"', lambda m: '"%s"' % (scene_dir / m.group(1)).resolve(), line)
+        line = PATH_KEY.sub(lambda m: '%s"%s"' % (m.group(1), (scene_dir / m.group(2)).resolve()), line)
         out.append(line)
         if section == "fabric" and re.match(r"^\s*diameter_m\s*=", line):
             out.extend(mesh_lines(mesh, level, base))
@@ -88,6 +89,9 @@ def stderr_of(out_dir):
 
 
 def row_of(mesh, level, result):
+    """The run's row, or None when it has no drape figures (a state with no shadow)."""
+    if not result.get("drape"):
+        return None
     springs = result["fabric"]["springs"]
     return {"mesh": mesh, "level": level, "nodes": result["fabric"]["nodes"], "springs": sum(springs.values()),
             "solver": result["solver"],
@@ -96,7 +100,7 @@ def row_of(mesh, level, result):
             "folds": result["drape"]["folds"], "solve_seconds": "%.2f" % result["solve_seconds"]}
 
 
-def tables(rows, levels, scene_name):
+def tables(rows, levels, meshes, scene_name):
     """The Figure 9 table (level 1) and the DC of each mesh at every level."""
     lines = ["Figure 9 (seed 000), measured: %s, level %d" % (scene_name, levels[0]), "",
              "| mesh | nodes | DC (%) | folds | iterations | time (s) |", "|---|---:|---:|---:|---:|---:|"]
@@ -107,7 +111,7 @@ def tables(rows, levels, scene_name):
     lines += ["", "DC (%) under refinement (nodes in brackets); last column: the change between the two finest", "",
               "| mesh | " + " | ".join("level %d" % L for L in levels) + " | finest change (points) |",
               "|---|" + "---:|" * (len(levels) + 1)]
-    for mesh in MESHES:
+    for mesh in meshes:
         by_level = {r["level"]: r for r in rows if r["mesh"] == mesh}
         cells = ["%.2f (%d)" % (100 * float(by_level[L]["drape_coefficient"]), by_level[L]["nodes"]) if L in by_level
                  else "-" for L in levels]
@@ -139,11 +143,13 @@ def main(argv=None):
     out = pathlib.Path(args.out)
     (out / "scenes").mkdir(parents=True, exist_ok=True)
     extra = ["--solver", args.solver] if args.solver else []
+    meshes = args.meshes.split(",")
+    for mesh in meshes:
+        if mesh not in MESHES:
+            sys.exit("drape_meshes: --meshes: no mesh named '%s' (%s)" % (mesh, ", ".join(MESHES)))
     rows, failed = [], []
     for level in levels:
-        for mesh in args.meshes.split(","):
-            if mesh not in MESHES:
-                sys.exit("drape_meshes: --meshes: no mesh named '%s' (%s)" % (mesh, ", ".join(MESHES)))
+        for mesh in meshes:
             name = "%s_%d" % (mesh, level)
             path = out / "scenes" / (name + ".toml")
             path.write_text(variant(scene_text, scene_path.parent, mesh, level, base))
@@ -151,7 +157,11 @@ def main(argv=None):
             if result is None or status not in (0, 3):
                 failed.append("%s: exit %d, see %s" % (name, status, stderr_of(out / "runs" / name)))
                 continue
-            rows.append(row_of(mesh, level, result))
+            row = row_of(mesh, level, result)
+            if row is None:
+                failed.append("%s: no drape figures (%s)" % (name, result["message"]))
+                continue
+            rows.append(row)
             if not result["converged"]:
                 failed.append("%s: %s" % (name, result["message"]))
             print("%-14s level %d: %5d nodes, DC %.2f %%, %s s" % (mesh, level, rows[-1]["nodes"],
@@ -160,7 +170,7 @@ def main(argv=None):
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
         writer.writerows(rows)
-    text = tables(rows, levels, scene_path.name)
+    text = tables(rows, levels, meshes, scene_path.name)
     (out / "table.md").write_text(text)
     print(text)
     for line in failed:

@@ -1,5 +1,6 @@
 #include "fabform/model/hinge_bending.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace fabform {
@@ -68,14 +69,15 @@ std::array<Eigen::Vector3d, 4> dihedral_angle_gradient(const std::array<Eigen::V
   return g;
 }
 
-double hinge_energy(const Hinge& hinge, double rigidity_N_m, const std::vector<Eigen::Vector3d>& x, int moved,
+double hinge_energy(const Hinge& hinge, double rigidity_Nm, const std::vector<Eigen::Vector3d>& x, int moved,
                     const Eigen::Vector3d& at) {
   const double theta = dihedral_angle(hinge_points(hinge, x, moved, at));
-  return 2.0 * rigidity_N_m * hinge.shape_factor * (1.0 - std::cos(theta));
+  return 2.0 * rigidity_Nm * hinge.shape_factor * (1.0 - std::cos(theta));
 }
 
-HingeGradient hinge_gradient(const Hinge& hinge, const std::vector<Eigen::Vector3d>& x) {
-  const std::array<Eigen::Vector3d, 4> g = dihedral_angle_gradient(hinge_points(hinge, x));
+HingeGradient hinge_gradient(const Hinge& hinge, const std::vector<Eigen::Vector3d>& x, int moved,
+                             const Eigen::Vector3d& at) {
+  const std::array<Eigen::Vector3d, 4> g = dihedral_angle_gradient(hinge_points(hinge, x, moved, at));
   HingeGradient out;
   const auto add = [&](int node, const Eigen::Vector3d& d) {
     for (int k = 0; k < out.count; ++k)
@@ -95,39 +97,33 @@ HingeGradient hinge_gradient(const Hinge& hinge, const std::vector<Eigen::Vector
 }
 
 double bending_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
-  if (!model.bending_rigidity_N_m) return 0.0;
+  if (!model.bending_rigidity_Nm) return 0.0;
   double energy = 0.0;
-  for (const Hinge& h : model.fabric.hinges()) energy += hinge_energy(h, *model.bending_rigidity_N_m, x);
+  for (const Hinge& h : model.fabric.hinges()) energy += hinge_energy(h, *model.bending_rigidity_Nm, x);
   return energy;
 }
 
 Eigen::Vector3d bending_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
                                  const Eigen::Vector3d& at) {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  if (!model.bending_rigidity_N_m) return force;
+  if (!model.bending_rigidity_Nm) return force;
   for (const int i : model.fabric.hinges_at(node)) {
     const Hinge& h = model.fabric.hinges()[static_cast<std::size_t>(i)];
-    const std::array<Eigen::Vector3d, 4> p = hinge_points(h, x, node, at);
-    const double theta = dihedral_angle(p);
+    const double theta = dihedral_angle(hinge_points(h, x, node, at));
     if (theta == 0.0) continue;
-    const std::array<Eigen::Vector3d, 4> g = dihedral_angle_gradient(p);
-    Eigen::Vector3d d_theta = Eigen::Vector3d::Zero();
-    if (h.edge[0] == node) d_theta += g[0];
-    if (h.edge[1] == node) d_theta += g[1];
-    for (int w = 0; w < 2; ++w)
-      for (const int corner : h.wing[static_cast<std::size_t>(w)])
-        if (corner == node) d_theta += 0.5 * g[static_cast<std::size_t>(2 + w)];
-    force -= 2.0 * *model.bending_rigidity_N_m * h.shape_factor * std::sin(theta) * d_theta;
+    const HingeGradient g = hinge_gradient(h, x, node, at);
+    const auto k = static_cast<std::size_t>(std::find(g.node.begin(), g.node.begin() + g.count, node) - g.node.begin());
+    force -= 2.0 * *model.bending_rigidity_Nm * h.shape_factor * std::sin(theta) * g.d_theta[k];
   }
   return force;
 }
 
 double node_bending_energy(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
                            const Eigen::Vector3d& at) {
-  if (!model.bending_rigidity_N_m) return 0.0;
+  if (!model.bending_rigidity_Nm) return 0.0;
   double energy = 0.0;
   for (const int i : model.fabric.hinges_at(node))
-    energy += hinge_energy(model.fabric.hinges()[static_cast<std::size_t>(i)], *model.bending_rigidity_N_m, x, node, at);
+    energy += hinge_energy(model.fabric.hinges()[static_cast<std::size_t>(i)], *model.bending_rigidity_Nm, x, node, at);
   return energy;
 }
 

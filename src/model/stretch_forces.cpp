@@ -18,7 +18,7 @@ Eigen::Vector3d node_force_at(const Model& model, const std::vector<Eigen::Vecto
     force += spring_force_on_a(at, x[static_cast<std::size_t>(other)], spring,
                                model.table(spring.kind));
   }
-  if (model.bending_rigidity_N_m) force += bending_force_at(model, x, node, at);
+  if (model.bending_rigidity_Nm) force += bending_force_at(model, x, node, at);
   if (!model.loads.empty()) force += model.loads[static_cast<std::size_t>(node)];
   return force;
 }

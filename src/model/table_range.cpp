@@ -38,7 +38,7 @@ std::string describe_collapse(const char* direction, const RangeCount& c, int to
                 "resists no compression%s, so nothing keeps the fabric from folding flat there; "
                 "this rest is degenerate",
                 c.collapsed, total, direction, 100 * kCollapsedStrain, 100 * c.most_compressed,
-                bending ? " and the bend springs did not stop it" : " and no bending is modelled");
+                bending ? " and the bending did not stop it" : " and no bending is modelled");
   return text;
 }
 
@@ -70,7 +70,8 @@ std::vector<std::string> table_range_warnings(const Model& model,
       warnings.push_back(describe(model.table(SpringKind(k)), to_string(SpringKind(k)), count[k], total[k]));
   for (std::size_t k = 0; k < kKinds; ++k)
     if (count[k].collapsed > 0)
-      warnings.push_back(describe_collapse(to_string(SpringKind(k)), count[k], total[k], model.bend.has_value()));
+      warnings.push_back(describe_collapse(to_string(SpringKind(k)), count[k], total[k],
+                                                   model.bend || model.bending_rigidity_Nm));
   return warnings;
 }
 

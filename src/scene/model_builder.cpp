@@ -176,11 +176,11 @@ void add_shear(const Scene& scene, Model* model) {
 void add_bending(const Scene& scene, Model* model) {
   if (!scene.bending.on) return;
   char text[200];
-  if (scene.bending.rigidity_N_m > 0.0) {
-    model->bending_rigidity_N_m = scene.bending.rigidity_N_m;
+  if (scene.bending.rigidity_Nm > 0.0) {
+    model->bending_rigidity_Nm = scene.bending.rigidity_Nm;
     std::snprintf(text, sizeof text,
                   "bending: discrete-shell hinges across %zu face sides, flexural rigidity %.6g N·m",
-                  model->fabric.hinges().size(), scene.bending.rigidity_N_m);
+                  model->fabric.hinges().size(), scene.bending.rigidity_Nm);
   } else {
     const double k = scene.bending.stiffness_N_m;
     model->bend = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "bending");

@@ -149,7 +149,6 @@ void read_fabric(TableReader& r, Scene* scene) {
 void read_shear(TableReader r, Scene* scene) {
   ShearSpec& s = scene->shear;
   s.on = true;
-  s.where = r.where();
   s.material_path = resolve(scene->path, plain_text(r, "material", "", true));
   s.material_where = r.locate_key("material");
   scene->fabric.shear_springs = true;
@@ -160,19 +159,19 @@ void read_bending(TableReader r, Scene* scene) {
   BendingSpec& b = scene->bending;
   b.on = true;
   b.where = r.where();
-  if (r.has("stiffness_N_m") == r.has("rigidity_N_m"))
-    throw InputError(b.where, "give one of stiffness_N_m (seed 004's bend springs) or rigidity_N_m "
+  if (r.has("stiffness_N_m") == r.has("rigidity_Nm"))
+    throw InputError(b.where, "give one of stiffness_N_m (seed 004's bend springs) or rigidity_Nm "
                               "(hinges with the fabric's flexural rigidity)");
   if (r.has("stiffness_N_m")) {
     b.stiffness_N_m = r.number("stiffness_N_m", 0.0, true);
     if (!(b.stiffness_N_m > 0.0 && b.stiffness_N_m <= 1e9)) r.fail("stiffness_N_m", "must be in (0, 1e9] N/m");
     scene->fabric.bend_springs = true;
   } else {
-    b.rigidity_N_m = r.number("rigidity_N_m", 0.0, true);
-    if (!(b.rigidity_N_m > 0.0 && b.rigidity_N_m <= 1e3)) r.fail("rigidity_N_m", "must be in (0, 1e3] N·m");
+    b.rigidity_Nm = r.number("rigidity_Nm", 0.0, true);
+    if (!(b.rigidity_Nm > 0.0 && b.rigidity_Nm <= 1e3)) r.fail("rigidity_Nm", "must be in (0, 1e3] N·m");
     scene->fabric.hinges = true;
   }
-  r.reject_unknown({"stiffness_N_m", "rigidity_N_m"});
+  r.reject_unknown({"stiffness_N_m", "rigidity_Nm"});
 }
 
 void read_drape(TableReader r, Scene* scene) {

@@ -64,7 +64,7 @@ double spring_stiffness_bound(const Model& model, const Spring& s) {
 // A hinge's stiffness 2·B·s·∇θ∇θᵀ in the flat fabric: half of each node's row sum, which is
 // what a spring's k is to the bound below (its block's row sums are 2k).
 void add_hinge_stiffness(const Model& model, std::vector<double>* stiffness) {
-  if (!model.bending_rigidity_N_m) return;
+  if (!model.bending_rigidity_Nm) return;
   std::vector<Eigen::Vector3d> rest;
   for (int k = 0; k < model.node_count(); ++k) rest.push_back(model.fabric.rest_position(k));
   for (const Hinge& h : model.fabric.hinges()) {
@@ -73,7 +73,7 @@ void add_hinge_stiffness(const Model& model, std::vector<double>* stiffness) {
     for (int k = 0; k < g.count; ++k) sum += g.d_theta[static_cast<std::size_t>(k)].norm();
     for (int k = 0; k < g.count; ++k)
       (*stiffness)[static_cast<std::size_t>(g.node[static_cast<std::size_t>(k)])] +=
-          *model.bending_rigidity_N_m * h.shape_factor * g.d_theta[static_cast<std::size_t>(k)].norm() * sum;
+          *model.bending_rigidity_Nm * h.shape_factor * g.d_theta[static_cast<std::size_t>(k)].norm() * sum;
   }
 }
 

@@ -65,11 +65,11 @@ Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
   }
   for (std::size_t i = 0; i < springs.size(); ++i)
     add_spring(directions, springs[i].a, springs[i].b, stiffness[i], &triplets);
-  if (model.bending_rigidity_N_m)
+  if (model.bending_rigidity_Nm)
     for (const Hinge& h : model.fabric.hinges()) {
       const double bent = std::cos(dihedral_angle(hinge_points(h, x)));
       if (bent > 0.0)
-        add_hinge(directions, hinge_gradient(h, x), 2.0 * *model.bending_rigidity_N_m * h.shape_factor * bent, &triplets);
+        add_hinge(directions, hinge_gradient(h, x), 2.0 * *model.bending_rigidity_Nm * h.shape_factor * bent, &triplets);
     }
   Eigen::SparseMatrix<double> hessian(directions.unknowns(), directions.unknowns());
   hessian.setFromTriplets(triplets.begin(), triplets.end());

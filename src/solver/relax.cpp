@@ -42,8 +42,8 @@ class Relaxation {
         step_attempts_(static_cast<int>(
             std::ceil(std::log(1.0 / options.min_step_fraction) / std::log(options.C)))) {}
 
-  // Colour by colour (the checkerboard for warp and weft springs): a node's springs reach only
-  // nodes of other colours, so the nodes of one colour relax independently of each other, in
+  // Colour by colour (the checkerboard for a rectangle's warp and weft springs): a node's springs
+  // and hinges reach only nodes of other colours, so the nodes of one colour relax independently of each other, in
   // parallel, with the same result for any thread count.
   void sweep() {
     for (const std::vector<int>& nodes : model_.fabric.colours()) {

@@ -132,11 +132,11 @@ class RunCommandBadDrape : public RunCommand, public ::testing::WithParamInterfa
 
 TEST_P(RunCommandBadDrape, ExitsTwoWithOneLineAndWritesNothing) {
   const BadDrape& bad = GetParam();
-  // A weightless copy of the denim: a zero density is refused where it is written.
-  dir.write("weightless.csv", "areal_density_kg_m2,0\nstrain,tension_N_per_m\n0,0\n1,500\n");
+  // A table that does not say what the fabric weighs.
+  dir.write("weightless.csv", "strain,tension_N_per_m\n0,0\n1,500\n");
   const std::string scene = test::source_path(std::string("scenes/") + bad.scene + ".toml");
   std::string overrides = bad.overrides;
-  if (const auto at = overrides.find("WEIGHTLESS"); at != std::string::npos)
+  for (auto at = overrides.find("WEIGHTLESS"); at != std::string::npos; at = overrides.find("WEIGHTLESS"))
     overrides.replace(at, 10, dir.path("weightless.csv"));
   const Outcome o = run_fabform(dir, "run " + scene + " --out out " + overrides);
   EXPECT_EQ(o.status, 2) << o.err;
@@ -158,7 +158,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrape{"SupportThatIsNoBody", "cusick", "--set 'drape.support=\"table\"'", "no body named 'table'"},
         BadDrape{"TriangularWithoutShearTable", "cusick", "--set 'fabric.mesh=\"triangular\"'",
                  "a triangular mesh has diagonal springs"},
-        BadDrape{"ZeroDensityWithGravity", "pin", "--set 'fabric.warp=\"WEIGHTLESS\"'", "weightless.csv:1:"}),
+        BadDrape{"NoDensityWithGravity", "pin",
+                 "--set 'fabric.warp=\"WEIGHTLESS\"' --set 'fabric.weft=\"WEIGHTLESS\"'",
+                 "gravity needs the fabric's mass per area"}),
     [](const auto& case_info) { return std::string(case_info.param.name); });
 
 // Tensions near the largest double on springs 5 m wide overflow at the start: the run stops as

@@ -181,7 +181,9 @@ TEST_P(EveryLayout, BendSpringsSpanTwoSpringsInLine) {
         // > 120° apart; near the arc mesh's centre a second, bent path joins the same two nodes.
         if (second.kind <= SpringKind::weft && (second.a == s.b || second.b == s.b) && s.rest_length > 0.85 * path) {
           ++middles;
-          EXPECT_LT(s.rest_length, path + 1e-12);
+          if (GetParam().mesh != FabricSpec::Mesh::arc) {
+            EXPECT_NEAR(s.rest_length, path, 1e-12);  // straight on
+          }
         }
       }
     }

@@ -90,7 +90,7 @@ TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithHinges) {
   spec.hinges = true;
   const Fabric fabric(spec);
   Model model = weighed_fabric(fabric, "white-swim-solid", 0.204);
-  model.bending_rigidity_N_m = 5.56e-5;
+  model.bending_rigidity_Nm = 5.56e-5;
   std::vector<Eigen::Vector3d> x = stretched_and_crumpled(fabric, 13u);
   for (auto& p : x) p.z() += 0.2 * (p.x() - 0.05) * (p.x() - 0.05) / 0.05;  // and curved
   ASSERT_GT(bending_energy(model, x), 1e-3 * elastic_energy(model, x));
@@ -103,7 +103,7 @@ TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWholeWithHinges) {
   spec.hinges = true;
   const Fabric grid(spec);
   Model model = weighed_fabric(grid, "ivory-rib-knit", 0.276);
-  model.bending_rigidity_N_m = 4e-5;
+  model.bending_rigidity_Nm = 4e-5;
   const std::vector<Eigen::Vector3d> x = stretched_and_crumpled(grid, 14u);
   for (const int node : {0, grid.node(2, 1), grid.node(4, 3)}) {
     const Eigen::Vector3d at = x[static_cast<std::size_t>(node)] + Eigen::Vector3d(0.001, -0.0005, -0.002);

@@ -85,7 +85,7 @@ Section fabric_section(Base base) {
 // with seed 004's bend springs, the arc mesh with hinges.
 std::vector<Section> drape_sections(Base base) {
   if (base != Base::circle && base != Base::arc) return {};
-  const Entry bending = base == Base::circle ? Entry{"stiffness_N_m", "0.5"} : Entry{"rigidity_N_m", "5e-5"};
+  const Entry bending = base == Base::circle ? Entry{"stiffness_N_m", "0.5"} : Entry{"rigidity_Nm", "5e-5"};
   return {{"shear", "[shear]", {{"material", "\"../materials/synthetic/linear-500.csv\""}}},
           {"bending", "[bending]", {bending}},
           {"drape", "[drape]", {{"support", "\"dome\""}}}};
@@ -287,8 +287,8 @@ const std::vector<KeyRow>& key_table() {
       {"bending",                        T::table,     circle, A, _,  _,   _,   _,    "", {}},
       {"bending.stiffness_N_m",          T::number,    circle, _, R,  R,   R,   _,    "",
        {{"cap", "1e9", A, kSame}, {"beyond_cap", "1.1e9", R, kSame}, {"missing", kRemove, R, "bending"},
-        {"and_rigidity", "0.5\nrigidity_N_m = 5e-5", R, "bending"}}},
-      {"bending.rigidity_N_m",           T::number,    arc,  _,   R,  R,   R,   _,    "",
+        {"and_rigidity", "0.5\nrigidity_Nm = 5e-5", R, "bending"}}},
+      {"bending.rigidity_Nm",           T::number,    arc,  _,   R,  R,   R,   _,    "",
        {{"cap", "1e3", A, kSame}, {"beyond_cap", "1001.0", R, kSame}, {"missing", kRemove, R, "bending"},
         {"measured_denim", "6.42e-5", A, kSame}}},
       {"drape",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},

@@ -2,10 +2,11 @@
 // dome, which relax would take hours over, and for the drapes, where relax creeps), rests on its
 // body without entering it (the pin scene has none), and meets its tolerance by a residual
 // recomputed without the solver's force code: the forces are central differences of the
-// fabric's total spring energy, plus its constant weight.
+// fabric's springs' and hinges' energy, plus its constant weight.
 #include <gtest/gtest.h>
 
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/hinge_bending.hpp"
 #include "fabform/fabric/spring.hpp"
 #include "fabform/model/stretch_forces.hpp"
 #include "fabform/scene/model_builder.hpp"
@@ -16,9 +17,10 @@
 namespace fabform {
 namespace {
 
-// The stretch energy of the springs at node k: the only part of the total that moving k changes.
+// The energy of the springs and hinges at node k: the only part of the total that moving k
+// changes (besides its weight, added as a force below).
 double energy_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int k) {
-  double energy = 0.0;
+  double energy = node_bending_energy(model, x, k, x[static_cast<std::size_t>(k)]);
   for (const int s : model.fabric.springs_at(k)) {
     if (s < 0) continue;
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];

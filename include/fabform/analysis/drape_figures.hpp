@@ -28,8 +28,10 @@ double support_area(const TriangleMesh& mesh);
 
 /// The figures of a fabric at positions x, its centre (where the flat circle's centre was
 /// placed) at centre_m. A fold counts when the outline's distance from the centre rises and
-/// falls by more than 2 % of the fabric's radius, on the outline averaged over two cells of a
-/// lattice (whose circle's outline is a staircase of cells, not folds). Throws std::invalid_argument when the support
+/// falls by more than 2 % of the fabric's radius, on the largest outline averaged over three
+/// cells of a lattice (whose circle's outline is a staircase of cells) and measured against
+/// the flat specimen's outline at each angle (a lattice circle is not round): a fabric left
+/// flat has none. Throws std::invalid_argument when the support
 /// is not smaller than the specimen or a position is not finite.
 DrapeFigures drape_figures(const Fabric& fabric, const std::vector<Eigen::Vector3d>& x,
                            const Eigen::Vector2d& centre_m, double support_area_m2);

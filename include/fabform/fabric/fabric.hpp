@@ -69,7 +69,8 @@ class Fabric {
   double flat_area() const { return flat_area_; }
 
   /// Nodes grouped so that no spring or hinge joins two nodes of a group: the nodes of one
-  /// group can move at once, independently. The checkerboard for warp and weft springs alone.
+  /// group can move at once, independently. The checkerboard for a rectangle's warp and weft
+  /// springs alone.
   const std::vector<std::vector<int>>& colours() const { return colours_; }
 
   /// Lattice indices: (i, j) on a rectangle or a circle's lattice, (ring, spoke) on an arc mesh

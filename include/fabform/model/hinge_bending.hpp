@@ -27,7 +27,7 @@ double dihedral_angle(const std::array<Eigen::Vector3d, 4>& p);
 std::array<Eigen::Vector3d, 4> dihedral_angle_gradient(const std::array<Eigen::Vector3d, 4>& p);
 
 /// 2·B·s·(1 − cos θ) (J), node `moved` at `at`.
-double hinge_energy(const Hinge& hinge, double rigidity_N_m, const std::vector<Eigen::Vector3d>& x,
+double hinge_energy(const Hinge& hinge, double rigidity_Nm, const std::vector<Eigen::Vector3d>& x,
                     int moved = -1, const Eigen::Vector3d& at = Eigen::Vector3d::Zero());
 
 /// The nodes the hinge reaches (up to six, each once) and ∂θ/∂x for each.
@@ -36,7 +36,8 @@ struct HingeGradient {
   std::array<Eigen::Vector3d, 6> d_theta{};
   int count = 0;
 };
-HingeGradient hinge_gradient(const Hinge& hinge, const std::vector<Eigen::Vector3d>& x);
+HingeGradient hinge_gradient(const Hinge& hinge, const std::vector<Eigen::Vector3d>& x, int moved = -1,
+                             const Eigen::Vector3d& at = Eigen::Vector3d::Zero());
 
 /// The model's bending: the sum over its fabric's hinges (0 without bending rigidity).
 double bending_energy(const Model& model, const std::vector<Eigen::Vector3d>& x);

@@ -24,7 +24,7 @@ struct Model {
   std::vector<Eigen::Vector3d> loads = {};  // N, one per node (the fabric's weight); empty: none
   std::vector<std::string> modelled = {};   // each term of the model, said for result.json
   double areal_density_kg_m2 = 0.0;         // the fabric's, when its weight is modelled; else 0
-  std::optional<double> bending_rigidity_N_m = {};  // B of the fabric's hinges, when it has them
+  std::optional<double> bending_rigidity_Nm = {};  // B of the fabric's hinges, when it has them
   std::optional<TensionTable> shear = {};   // the shear springs' table, when the fabric has them
   std::optional<TensionTable> bend = {};    // the bend springs' table, when the fabric has them
 

@@ -52,16 +52,14 @@ struct ShearSpec {
   bool on = false;
   std::string material_path;
   SourceLocation material_where;
-  SourceLocation where;
 };
 
-// [bending]: seed 004's bend springs, linear in tension and compression: T = k·ε per width.
 // [bending]: seed 004's bend springs (stiffness_N_m) or discrete-shell hinges with the
-// fabric's flexural rigidity (rigidity_N_m); one of the two.
+// fabric's flexural rigidity (rigidity_Nm); one of the two.
 struct BendingSpec {
   bool on = false;
   double stiffness_N_m = 0.0;  // bend springs' tension per width per unit strain; 0: none
-  double rigidity_N_m = 0.0;   // B, moment per width per unit curvature (N·m); 0: none
+  double rigidity_Nm = 0.0;   // B, moment per width per unit curvature (N·m); 0: none
   SourceLocation where;
 };
 

@@ -24,7 +24,7 @@ struct DynamicOptions {
   // Inertia only: the rest does not depend on it. A typical fabric's 200 g/m². Used when the
   // model has no weight; with gravity the fabric's own density moves it.
   double areal_density_kg_m2 = 0.2;
-  // f in [0, 1); empty: 4 / (divisions along the longer side), near critical damping of the
+  // f in [0, 1); empty: 4 / (springs across the fabric), near critical damping of the
   // slowest mode of a taut grid, so the step count to rest grows with the grid's size, not its square.
   std::optional<double> damping;
   double time_step_fraction = 0.9;  // Δt as a fraction of the stability limit, in (0, 1]
@@ -34,8 +34,8 @@ struct DynamicOptions {
   std::string invalid_reason(std::string* field = nullptr) const;
 };
 
-/// Each node's mass (kg): the areal density times the fabric area the node stands for, a
-/// quarter of the areas w·L of its springs (dx·dy inside, half on an edge, a quarter at a corner).
+/// Each node's mass (kg): the areal density times the fabric area the node stands for, its
+/// faces' areas shared equally among their corners (a cell inside, half on an edge).
 std::vector<double> node_masses(const Model& model, double areal_density_kg_m2);
 
 /// The mass per area the dynamics moves (kg/m²): the fabric's when its weight is modelled, so

@@ -1,6 +1,7 @@
 #pragma once
 // Seed 003's node-wise relaxation (García, Gómez, Ruiz, Boulanger 2006, §3.2–3.3), faithful:
-// each node in turn (in checkerboard order, which the seed leaves open) moves along its
+// each node in turn (colour by colour, the checkerboard on a rectangle; the seed leaves the
+// order open) moves along its
 // resultant R by ξ = Σ|d_k| / C (Eq. 4–5); while the move does not reduce the node's residual,
 // ξ is divided by C. A node pressed against a body slides
 // along its tangent plane and is projected back onto the surface; it leaves when R points out
