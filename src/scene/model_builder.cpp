@@ -171,8 +171,9 @@ void add_shear(const Scene& scene, Model* model) {
                             scene.shear.material_path);
 }
 
-// Seed 004's bend springs resist the shortening a fold brings as much as stretching: a table
-// linear through zero in both directions, T = k·ε per width.
+// Bending: hinges with the fabric's flexural rigidity, or seed 004's bend springs, which resist
+// the shortening a fold brings as much as stretching: a table linear through zero in both
+// directions, T = k·ε per width.
 void add_bending(const Scene& scene, Model* model) {
   if (!scene.bending.on) return;
   char text[200];
