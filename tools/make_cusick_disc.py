@@ -9,10 +9,10 @@ to the byte (`--check` regenerates it and compares). With 256 sides its top's ar
 
 Usage:  /usr/bin/python3 tools/make_cusick_disc.py [--check]
 """
-import argparse
 import math
 import pathlib
-import sys
+
+from generated_mesh import obj_text, write_or_check
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 TARGET = ROOT / "molds" / "cusick_disc_d180mm.obj"
@@ -22,9 +22,10 @@ SEGMENTS = 256
 
 
 def disc_obj() -> str:
-    lines = [f"# fabform Cusick support disc: diameter {2 * RADIUS_MM:g} mm, {THICKNESS_MM:g} mm thick, "
-             f"centre on the z axis, top on z = 0 (tools/make_cusick_disc.py)"]
-    vertex = lambda p: lines.append("v {:.9f} {:.9f} {:.9f}".format(*(0.0 if abs(c) < 5e-10 else c for c in p)))
+    comment = (f"fabform Cusick support disc: diameter {2 * RADIUS_MM:g} mm, {THICKNESS_MM:g} mm thick, "
+               f"centre on the z axis, top on z = 0 (tools/make_cusick_disc.py)")
+    vertices = []
+    vertex = vertices.append
     for z in (0.0, -THICKNESS_MM):  # 1: the top centre, 2..: its rim; then the bottom's
         vertex((0.0, 0.0, z))
         for s in range(SEGMENTS):
@@ -38,21 +39,11 @@ def disc_obj() -> str:
         faces.append((bottom, rim(bottom, s + 1), rim(bottom, s)))
         faces.append((rim(top, s), rim(bottom, s), rim(bottom, s + 1)))
         faces.append((rim(top, s), rim(bottom, s + 1), rim(top, s + 1)))
-    lines += [f"f {a} {b} {c}" for a, b, c in faces]
-    return "\n".join(lines) + "\n"
+    return obj_text(comment, vertices, faces)
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--check", action="store_true", help="fail if the shipped disc differs")
-    args = parser.parse_args()
-    text = disc_obj()
-    if args.check:
-        if TARGET.read_text() != text:
-            sys.exit(f"{TARGET}: differs from what tools/make_cusick_disc.py writes")
-        return
-    TARGET.write_text(text)
-    print(f"wrote {TARGET}")
+    write_or_check(TARGET, disc_obj(), __doc__.splitlines()[0], "tools/make_cusick_disc.py")
 
 
 if __name__ == "__main__":

@@ -9,10 +9,10 @@ writes them. With 64 × 256 facets the chord error is r(1 − cos(π/256)) ≈ 2
 
 Usage:  /usr/bin/python3 tools/make_dome_mold.py [--check]
 """
-import argparse
 import math
 import pathlib
-import sys
+
+from generated_mesh import obj_text, write_or_check
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 TARGET = ROOT / "molds" / "dome_hemisphere_r30mm.obj"
@@ -22,9 +22,10 @@ SEGMENTS = 256
 
 
 def dome_obj() -> str:
-    lines = [f"# fabform dome mold: closed hemisphere, radius {RADIUS_MM:g} mm, centre at the origin, "
-             f"base on z = 0 (tools/make_dome_mold.py)"]
-    vertex = lambda p: lines.append("v {:.9f} {:.9f} {:.9f}".format(*(0.0 if abs(c) < 5e-10 else c for c in p)))
+    comment = (f"fabform dome mold: closed hemisphere, radius {RADIUS_MM:g} mm, centre at the origin, "
+               f"base on z = 0 (tools/make_dome_mold.py)")
+    vertices = []
+    vertex = vertices.append
     vertex((0.0, 0.0, RADIUS_MM))  # 1: the pole
     for ring in range(1, RINGS + 1):  # ring RINGS lies on z = 0
         polar = 0.5 * math.pi * ring / RINGS
@@ -42,21 +43,11 @@ def dome_obj() -> str:
             faces.append((at(ring, s), at(ring + 1, s), at(ring + 1, s + 1)))
             faces.append((at(ring, s), at(ring + 1, s + 1), at(ring, s + 1)))
         faces.append((base, at(RINGS, s + 1), at(RINGS, s)))  # the base faces down
-    lines += [f"f {a} {b} {c}" for a, b, c in faces]
-    return "\n".join(lines) + "\n"
+    return obj_text(comment, vertices, faces)
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--check", action="store_true", help="fail if the shipped mold differs")
-    args = parser.parse_args()
-    text = dome_obj()
-    if args.check:
-        if TARGET.read_text() != text:
-            sys.exit(f"{TARGET}: differs from what tools/make_dome_mold.py writes")
-        return
-    TARGET.write_text(text)
-    print(f"wrote {TARGET}")
+    write_or_check(TARGET, dome_obj(), __doc__.splitlines()[0], "tools/make_dome_mold.py")
 
 
 if __name__ == "__main__":

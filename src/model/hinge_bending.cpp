@@ -77,8 +77,10 @@ double hinge_energy(const Hinge& hinge, double rigidity_Nm, const std::vector<Ei
 
 HingeGradient hinge_gradient(const Hinge& hinge, const std::vector<Eigen::Vector3d>& x, int moved,
                              const Eigen::Vector3d& at) {
-  const std::array<Eigen::Vector3d, 4> g = dihedral_angle_gradient(hinge_points(hinge, x, moved, at));
+  const std::array<Eigen::Vector3d, 4> p = hinge_points(hinge, x, moved, at);
+  const std::array<Eigen::Vector3d, 4> g = dihedral_angle_gradient(p);
   HingeGradient out;
+  out.theta = dihedral_angle(p);
   const auto add = [&](int node, const Eigen::Vector3d& d) {
     for (int k = 0; k < out.count; ++k)
       if (out.node[static_cast<std::size_t>(k)] == node) {
@@ -109,11 +111,10 @@ Eigen::Vector3d bending_force_at(const Model& model, const std::vector<Eigen::Ve
   if (!model.bending_rigidity_Nm) return force;
   for (const int i : model.fabric.hinges_at(node)) {
     const Hinge& h = model.fabric.hinges()[static_cast<std::size_t>(i)];
-    const double theta = dihedral_angle(hinge_points(h, x, node, at));
-    if (theta == 0.0) continue;
     const HingeGradient g = hinge_gradient(h, x, node, at);
+    if (g.theta == 0.0) continue;
     const auto k = static_cast<std::size_t>(std::find(g.node.begin(), g.node.begin() + g.count, node) - g.node.begin());
-    force -= 2.0 * *model.bending_rigidity_Nm * h.shape_factor * std::sin(theta) * g.d_theta[k];
+    force -= 2.0 * *model.bending_rigidity_Nm * h.shape_factor * std::sin(g.theta) * g.d_theta[k];
   }
   return force;
 }

@@ -67,9 +67,9 @@ Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
     add_spring(directions, springs[i].a, springs[i].b, stiffness[i], &triplets);
   if (model.bending_rigidity_Nm)
     for (const Hinge& h : model.fabric.hinges()) {
-      const double bent = std::cos(dihedral_angle(hinge_points(h, x)));
-      if (bent > 0.0)
-        add_hinge(directions, hinge_gradient(h, x), 2.0 * *model.bending_rigidity_Nm * h.shape_factor * bent, &triplets);
+      const HingeGradient g = hinge_gradient(h, x);
+      const double bent = std::cos(g.theta);
+      if (bent > 0.0) add_hinge(directions, g, 2.0 * *model.bending_rigidity_Nm * h.shape_factor * bent, &triplets);
     }
   Eigen::SparseMatrix<double> hessian(directions.unknowns(), directions.unknowns());
   hessian.setFromTriplets(triplets.begin(), triplets.end());

@@ -33,6 +33,13 @@ class RunCommand : public ::testing::Test {
               "[solver]\ntolerance_N = 1e-5\n");
   }
   bool exists(const std::string& name) const { return std::filesystem::exists(dir.path(name)); }
+  // Bad input: exit status 2, one line saying what is wrong, no output folder.
+  void expect_refused(const Outcome& o, const std::string& expected_in_message) const {
+    EXPECT_EQ(o.status, 2) << o.err;
+    EXPECT_EQ(line_count(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find(expected_in_message), std::string::npos) << o.err;
+    EXPECT_FALSE(exists("out")) << "an output folder was created for bad input";
+  }
   test::TempDir dir;
 };
 
@@ -99,10 +106,7 @@ TEST_P(RunCommandBadInput, ExitsTwoWithOneLineAndWritesNothing) {
   const BadRun& bad = GetParam();
   if (std::string(bad.file_to_write).size() > 0) dir.write(bad.file_to_write, bad.content);
   const Outcome o = run_fabform(dir, bad.arguments);
-  EXPECT_EQ(o.status, 2) << o.err;
-  EXPECT_EQ(line_count(o.err), 1) << o.err;
-  EXPECT_NE(o.err.find(bad.expected_in_message), std::string::npos) << o.err;
-  EXPECT_FALSE(exists("out")) << "an output folder was created for bad input";
+  expect_refused(o, bad.expected_in_message);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -139,10 +143,7 @@ TEST_P(RunCommandBadDrape, ExitsTwoWithOneLineAndWritesNothing) {
   for (auto at = overrides.find("WEIGHTLESS"); at != std::string::npos; at = overrides.find("WEIGHTLESS"))
     overrides.replace(at, 10, dir.path("weightless.csv"));
   const Outcome o = run_fabform(dir, "run " + scene + " --out out " + overrides);
-  EXPECT_EQ(o.status, 2) << o.err;
-  EXPECT_EQ(line_count(o.err), 1) << o.err;
-  EXPECT_NE(o.err.find(bad.expected_in_message), std::string::npos) << o.err;
-  EXPECT_FALSE(exists("out")) << "an output folder was created for bad input";
+  expect_refused(o, bad.expected_in_message);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <random>
 #include <string>
 
@@ -58,6 +59,19 @@ std::vector<Eigen::Vector3d> stretched_and_crumpled(const Fabric& fabric, unsign
   return x;
 }
 
+// Moving one node changes Π by node_energy_change: the same number relax judges its steps by.
+// The whole's difference carries the rounding of Π (~1e-16 of it); the node's does not.
+void expect_node_changes_are_the_whole(const Model& model, const std::vector<Eigen::Vector3d>& x,
+                                       std::initializer_list<int> nodes) {
+  for (const int node : nodes) {
+    const Eigen::Vector3d at = x[static_cast<std::size_t>(node)] + Eigen::Vector3d(0.001, -0.0005, -0.002);
+    std::vector<Eigen::Vector3d> moved = x;
+    moved[static_cast<std::size_t>(node)] = at;
+    const double whole = potential_energy(model, moved) - potential_energy(model, x);
+    EXPECT_NEAR(node_energy_change(model, x, node, at), whole, 1e-9 * std::abs(whole)) << node;
+  }
+}
+
 TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithGravity) {
   const Fabric grid({0.1, 0.08, 6, 4});
   expect_forces_are_minus_the_gradient(weighed_fabric(grid, "white-swim-solid", 0.204),
@@ -105,29 +119,15 @@ TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWholeWithHinges) {
   Model model = weighed_fabric(grid, "ivory-rib-knit", 0.276);
   model.bending_rigidity_Nm = 4e-5;
   const std::vector<Eigen::Vector3d> x = stretched_and_crumpled(grid, 14u);
-  for (const int node : {0, grid.node(2, 1), grid.node(4, 3)}) {
-    const Eigen::Vector3d at = x[static_cast<std::size_t>(node)] + Eigen::Vector3d(0.001, -0.0005, -0.002);
-    std::vector<Eigen::Vector3d> moved = x;
-    moved[static_cast<std::size_t>(node)] = at;
-    const double whole = potential_energy(model, moved) - potential_energy(model, x);
-    EXPECT_NEAR(node_energy_change(model, x, node, at), whole, 1e-9 * std::abs(whole)) << node;
-  }
+  expect_node_changes_are_the_whole(model, x, {0, grid.node(2, 1), grid.node(4, 3)});
 }
 
-// Moving one node changes Π by node_energy_change: the same number relax judges its steps by.
 TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWhole) {
   const Fabric grid({0.1, 0.08, 5, 4});
   const Model model = weighed_fabric(grid, "ivory-rib-knit", 0.276);
   std::vector<Eigen::Vector3d> x;
   for (int k = 0; k < grid.node_count(); ++k) x.push_back(1.08 * grid.rest_position(k));
-  for (const int node : {0, grid.node(2, 1), grid.node(4, 3)}) {
-    const Eigen::Vector3d at = x[static_cast<std::size_t>(node)] + Eigen::Vector3d(0.001, -0.0005, -0.002);
-    std::vector<Eigen::Vector3d> moved = x;
-    moved[static_cast<std::size_t>(node)] = at;
-    const double whole = potential_energy(model, moved) - potential_energy(model, x);
-    // The whole's difference carries the rounding of Π (~1e-16 of it); the node's does not.
-    EXPECT_NEAR(node_energy_change(model, x, node, at), whole, 1e-9 * std::abs(whole)) << node;
-  }
+  expect_node_changes_are_the_whole(model, x, {0, grid.node(2, 1), grid.node(4, 3)});
 }
 
 TEST(PotentialEnergy, WithoutLoadsItIsTheStretchEnergy) {

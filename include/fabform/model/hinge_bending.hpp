@@ -30,8 +30,9 @@ std::array<Eigen::Vector3d, 4> dihedral_angle_gradient(const std::array<Eigen::V
 double hinge_energy(const Hinge& hinge, double rigidity_Nm, const std::vector<Eigen::Vector3d>& x,
                     int moved = -1, const Eigen::Vector3d& at = Eigen::Vector3d::Zero());
 
-/// The nodes the hinge reaches (up to six, each once) and ∂θ/∂x for each.
+/// The hinge's angle θ, the nodes it reaches (up to six, each once) and ∂θ/∂x for each.
 struct HingeGradient {
+  double theta = 0.0;
   std::array<int, 6> node{};
   std::array<Eigen::Vector3d, 6> d_theta{};
   int count = 0;
