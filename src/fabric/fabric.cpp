@@ -70,6 +70,7 @@ const char* to_string(SpringKind kind) {
 Fabric::Fabric(const FabricSpec& spec) : spec_(spec) {
   if (const std::string why = spec.invalid_reason(); !why.empty()) throw std::invalid_argument(why);
   adopt(layout_of(spec));
+  index_faces();
   add_edge_springs();
   if (spec.shear_springs || spec.mesh == FabricSpec::Mesh::triangular) add_shear_springs();
   index_springs();
@@ -257,14 +258,25 @@ void Fabric::colour_nodes() {
   }
 }
 
-std::vector<double> Fabric::node_areas() const {
-  std::vector<double> area(static_cast<std::size_t>(node_count()), 0.0);
+// Each node's faces, and its share of their areas.
+void Fabric::index_faces() {
+  const auto n = static_cast<std::size_t>(node_count());
+  face_offset_.assign(n + 1, 0);
+  node_areas_.assign(n, 0.0);
   for (std::size_t face = 0; face < faces_.size(); ++face) {
     const Face& f = faces_[face];
-    const double share = face_areas_[face] / f.corners;
-    for (int c = 0; c < f.corners; ++c) area[static_cast<std::size_t>(f.corner[static_cast<std::size_t>(c)])] += share;
+    for (int c = 0; c < f.corners; ++c) {
+      const auto k = static_cast<std::size_t>(f.corner[static_cast<std::size_t>(c)]);
+      ++face_offset_[k + 1];
+      node_areas_[k] += face_areas_[face] / f.corners;
+    }
   }
-  return area;
+  for (std::size_t k = 0; k < n; ++k) face_offset_[k + 1] += face_offset_[k];
+  face_ids_.assign(face_offset_[n], -1);
+  std::vector<std::size_t> next(face_offset_.begin(), face_offset_.end() - 1);
+  for (std::size_t face = 0; face < faces_.size(); ++face)
+    for (int c = 0; c < faces_[face].corners; ++c)
+      face_ids_[next[static_cast<std::size_t>(faces_[face].corner[static_cast<std::size_t>(c)])]++] = static_cast<int>(face);
 }
 
 int Fabric::node(int i, int j) const {

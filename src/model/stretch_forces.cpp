@@ -5,6 +5,7 @@
 
 #include "fabform/fabric/spring.hpp"
 #include "fabform/model/hinge_bending.hpp"
+#include "fabform/model/wind.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -20,6 +21,9 @@ Eigen::Vector3d node_force_at(const Model& model, const std::vector<Eigen::Vecto
   }
   if (model.bending_rigidity_Nm) force += bending_force_at(model, x, node, at);
   if (!model.loads.empty()) force += model.loads[static_cast<std::size_t>(node)];
+  if (model.wind)  // at rest; dynamic adds the drag of the node's own velocity
+    force += wind_force(*model.wind, model.fabric.node_areas()[static_cast<std::size_t>(node)],
+                        node_normal(model.fabric, x, node, at), Eigen::Vector3d::Zero());
   return force;
 }
 

@@ -191,6 +191,18 @@ void add_bending(const Scene& scene, Model* model) {
   model->modelled.push_back(text);
 }
 
+void add_wind(const Scene& scene, Model* model) {
+  if (!scene.wind.on) return;
+  model->wind = Wind{scene.wind.velocity_m_s, scene.wind.coefficient_N_s_m3};
+  const Eigen::Vector3d& v = scene.wind.velocity_m_s;
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "wind: seed 004's C·A·[n·(v_wind − v)]·n on each node, v_wind = (%.6g, %.6g, %.6g) m/s, "
+                "C = %.6g N·s/m³ per area",
+                v.x(), v.y(), v.z(), scene.wind.coefficient_N_s_m3);
+  model->modelled.push_back(text);
+}
+
 // A drape test's support must lie under the specimen: every point of the named body, seen from
 // above, within the placed circle.
 void check_drape_support(const Scene& scene, const Model& model) {
@@ -238,6 +250,7 @@ Model build_model(const Scene& scene) {
   add_shear(scene, &model);
   add_bending(scene, &model);
   add_gravity(scene, warp, weft, &model);
+  add_wind(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);
   return model;

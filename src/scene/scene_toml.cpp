@@ -35,6 +35,8 @@ constexpr double kMaxLength_m = 1e6;
 // An angle is written within one turn; far beyond it (1e300) the remainder is rounding noise,
 // and nothing downstream notices.
 constexpr double kMaxAngle_deg = 360.0;
+// A wind beyond the speed of sound is a unit mistake.
+constexpr double kFastestWind_m_s = 1000.0;
 
 // %g, with the exponent as a scene writes it: 1e6, not 1e+06.
 std::string number_text(double value) {
@@ -172,6 +174,21 @@ void read_bending(TableReader r, Scene* scene) {
     scene->fabric.hinges = true;
   }
   r.reject_unknown({"stiffness_N_m", "rigidity_Nm"});
+}
+
+void read_wind(TableReader r, Scene* scene) {
+  WindSpec& w = scene->wind;
+  w.on = true;
+  w.where = r.where();
+  if (!r.has("velocity_m_s")) r.fail("velocity_m_s", "wind without a direction: give its velocity, [x, y, z] m/s");
+  w.velocity_m_s = r.vector<3>("velocity_m_s", Eigen::Vector3d::Zero());
+  if (w.velocity_m_s.squaredNorm() == 0.0) r.fail("velocity_m_s", "wind without a direction: the velocity is zero");
+  if (!(w.velocity_m_s.norm() <= kFastestWind_m_s))
+    r.fail("velocity_m_s", "must be at most 1000 m/s in speed");
+  w.coefficient_N_s_m3 = r.number("coefficient_N_s_m3", 0.0, true);
+  if (!(w.coefficient_N_s_m3 > 0.0 && w.coefficient_N_s_m3 <= 1e6))
+    r.fail("coefficient_N_s_m3", "must be in (0, 1e6] N·s/m³ (force per area per m/s of wind across the fabric)");
+  r.reject_unknown({"velocity_m_s", "coefficient_N_s_m3"});
 }
 
 void read_drape(TableReader r, Scene* scene) {
@@ -428,14 +445,18 @@ Scene read_scene(const toml::table& root, const std::string& path,
   if (r.has("gravity")) read_gravity(r.table("gravity", false), &scene);
   if (r.has("shear")) read_shear(r.table("shear", false), &scene);
   if (r.has("bending")) read_bending(r.table("bending", false), &scene);
+  if (r.has("wind")) read_wind(r.table("wind", false), &scene);
   if (r.has("drape")) read_drape(r.table("drape", false), &scene);
   if (scene.fabric.mesh == FabricSpec::Mesh::triangular && !scene.shear.on)
     fabric.fail("mesh", "a triangular mesh has diagonal springs: name their bias table in a [shear] table "
                         "(material = FILE)");
   read_initial(r.table("initial", false), &scene);
   read_solver(r.table("solver", false), &scene);
+  if (scene.wind.on && scene.solver.name != "dynamic")
+    throw InputError(scene.wind.where, "wind depends on the fabric's velocity (seed 004): only solver dynamic models it, "
+                                       "and the scene's solver is " + scene.solver.name);
   read_output(r.table("output", false), &scene);
-  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "drape",
+  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "drape",
                     "initial", "solver", "output"});
   return scene;
 }

@@ -10,6 +10,7 @@
 
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/wind.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/thread_count.hpp"
 
@@ -140,6 +141,7 @@ class Dynamics {
 
   /// One time step driven by the resultants R at the current positions.
   void advance(const std::vector<Eigen::Vector3d>& forces) {
+    if (model_.wind) find_normals();
 // Dynamic: a node on a body costs more than a free one.
 #pragma omp parallel for schedule(dynamic, 256) if (model_.node_count() >= kMinParallelItems)
     for (int k = 0; k < model_.node_count(); ++k) advance_node(k, forces[static_cast<std::size_t>(k)]);
@@ -160,11 +162,23 @@ class Dynamics {
     if (contact.active() && remove_locked(r, lock).dot(contact.normal) > 0.0)
       contact = NodeContact{};  // R points out of the body: the node leaves it (§3.2.2)
     Eigen::Vector3d& v = state_.velocity[i];
-    v = sliding((1.0 - damping_) * v + step_.seconds / mass_[i] * r, lock, contact);
+    v = (1.0 - damping_) * v + step_.seconds / mass_[i] * r;
+    if (model_.wind)
+      v = after_wind_drag(step_.seconds * model_.wind->coefficient_N_s_m3 * model_.fabric.node_areas()[i] / mass_[i],
+                          normals_[i], v);
+    v = sliding(v, lock, contact);
     const NodeMove moved = move_node(model_, k, state_.x[i], step_.seconds * v, contact);
     if (moved.contact.active()) v -= std::min(v.dot(moved.contact.normal), 0.0) * moved.contact.normal;
     state_.x[i] = moved.x;
     contact = moved.contact;
+  }
+
+  // Every node's normal before any moves: advance_node's drag needs them at the step's start.
+  void find_normals() {
+    normals_.resize(state_.x.size());
+#pragma omp parallel for schedule(static) if (model_.node_count() >= kMinParallelItems)
+    for (int k = 0; k < model_.node_count(); ++k)
+      normals_[static_cast<std::size_t>(k)] = node_normal(model_.fabric, state_.x, k);
   }
 
   // Provot's deformation constraint, one pass: a spring longer than (1 + τ)·L is shortened to
@@ -228,6 +242,7 @@ class Dynamics {
   std::vector<double> mass_;
   TimeStep step_;
   double damping_;
+  std::vector<Eigen::Vector3d> normals_;  // at the step's start, when the wind blows
   std::vector<int> hops_;           // springs from each node to the nearest held node
   std::vector<int> stretch_order_;  // spring indices, nearest the held nodes first
 };
@@ -247,6 +262,8 @@ Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& op
                 const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("dynamic: " + why);
+  if (model.wind)
+    if (const std::string why = model.wind->invalid_reason(); !why.empty()) throw std::invalid_argument("dynamic: " + why);
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Dynamics dynamics(model, state, options);

@@ -2,6 +2,8 @@
 // errors that name the file, and output folders that are complete or untouched.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <sstream>
 
 #include "fabform/io/obj_text.hpp"
 #include "support/cli.hpp"
@@ -161,8 +163,39 @@ INSTANTIATE_TEST_SUITE_P(
                  "a triangular mesh has diagonal springs"},
         BadDrape{"NoDensityWithGravity", "pin",
                  "--set 'fabric.warp=\"WEIGHTLESS\"' --set 'fabric.weft=\"WEIGHTLESS\"'",
-                 "gravity needs the fabric's mass per area"}),
+                 "gravity needs the fabric's mass per area"},
+        BadDrape{"WindWithoutADirection", "pin", "--solver dynamic --set wind.coefficient_N_s_m3=1",
+                 "wind.velocity_m_s: wind without a direction"},
+        BadDrape{"WindStill", "pin", "--solver dynamic --set wind.velocity_m_s=[0,0,0] --set wind.coefficient_N_s_m3=1",
+                 "wind.velocity_m_s: wind without a direction: the velocity is zero"},
+        BadDrape{"WindForNewton", "cusick", "--set wind.velocity_m_s=[1,0,0] --set wind.coefficient_N_s_m3=1",
+                 "only solver dynamic models it"}),
     [](const auto& case_info) { return std::string(case_info.param.name); });
+
+// Seed 004's wind on a clamped square: dynamic brings it to rest bulging downwind, and the
+// report says the wind was modelled.
+TEST_F(RunCommand, WindBlowsAClampedSquareDownwind) {
+  dir.write("linear.csv", "strain,tension_N_per_m\n0,0\n1,500\n");
+  dir.write("wind.toml",
+            "[fabric]\nsize_m = [0.1, 0.1]\ndivisions = [6, 6]\nwarp = \"linear.csv\"\nweft = \"linear.csv\"\n"
+            "[[constraint]]\nnodes = \"perimeter\"\n[wind]\nvelocity_m_s = [0.0, 3.0, -4.0]\ncoefficient_N_s_m3 = 1.0\n"
+            "[initial]\nshape = \"flat\"\n[solver]\nname = \"dynamic\"\ntolerance_N = 1e-8\nmax_iterations = 1000000\n");
+  const Outcome o = run_fabform(dir, "run wind.toml --out out");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const std::string json = slurp(dir.path("out/result.json"));
+  EXPECT_NE(json.find("wind: seed 004's C·A·[n·(v_wind − v)]·n on each node, v_wind = (0, 3, -4) m/s, C = 1 N·s/m³"),
+            std::string::npos)
+      << json;
+  double lowest = 0.0;
+  std::istringstream obj(slurp(dir.path("out/fabric.obj")));
+  for (std::string tag; obj >> tag;) {
+    if (tag != "v") continue;
+    double x = 0, y = 0, z = 0;
+    obj >> x >> y >> z;
+    lowest = std::min(lowest, z);
+  }
+  EXPECT_LT(lowest, -1e-3) << "the wind blows along -z across the square";
+}
 
 // Tensions near the largest double on springs 5 m wide overflow at the start: the run stops as
 // a numerical failure naming the node and iteration, exits 4, and still writes its results.

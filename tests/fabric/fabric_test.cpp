@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <limits>
@@ -147,6 +148,31 @@ TEST_P(FabricShapes, SpringsAtNodes) {
     }
   }
   for (const int count : listed) EXPECT_EQ(count, 2);
+}
+
+// faces_at lists, on every mesh, each face at each of its corners once, in face order.
+TEST(Fabric, FacesAtNodes) {
+  FabricSpec arc{0.2, 0.2, 0, 0, FabricSpec::Shape::circle, FabricSpec::Mesh::arc};
+  arc.rings = 3, arc.spokes = 7;
+  for (const FabricSpec& spec : {FabricSpec{0.1, 0.05, 4, 2}, FabricSpec{0.2, 0.2, 6, 6, FabricSpec::Shape::circle},
+                                 FabricSpec{0.2, 0.2, 6, 6, FabricSpec::Shape::circle, FabricSpec::Mesh::triangular},
+                                 arc}) {
+    const Fabric fabric(spec);
+    std::vector<int> listed(fabric.faces().size(), 0);
+    for (int k = 0; k < fabric.node_count(); ++k) {
+      int previous = -1;
+      for (const int f : fabric.faces_at(k)) {
+        ASSERT_GE(f, 0);
+        ASSERT_LT(f, static_cast<int>(fabric.faces().size()));
+        const Face& face = fabric.faces()[static_cast<std::size_t>(f)];
+        EXPECT_NE(std::find(face.corner.begin(), face.corner.begin() + face.corners, k), face.corner.begin() + face.corners);
+        EXPECT_GT(f, previous);
+        previous = f;
+        ++listed[static_cast<std::size_t>(f)];
+      }
+    }
+    for (std::size_t f = 0; f < listed.size(); ++f) EXPECT_EQ(listed[f], fabric.faces()[f].corners) << f;
+  }
 }
 
 TEST_P(FabricShapes, Perimeter) {

@@ -82,13 +82,17 @@ Section fabric_section(Base base) {
 }
 
 // The drape test's sections, in the circles' scenes: the dome is the support; the circle bends
-// with seed 004's bend springs, the arc mesh with hinges.
+// with seed 004's bend springs, the arc mesh with hinges and is blown by seed 004's wind (its
+// solver is dynamic, the only one that models wind).
 std::vector<Section> drape_sections(Base base) {
   if (base != Base::circle && base != Base::arc) return {};
-  const Entry bending = base == Base::circle ? Entry{"stiffness_N_m", "0.5"} : Entry{"rigidity_Nm", "5e-5"};
-  return {{"shear", "[shear]", {{"material", "\"../materials/synthetic/linear-500.csv\""}}},
-          {"bending", "[bending]", {bending}},
-          {"drape", "[drape]", {{"support", "\"dome\""}}}};
+  std::vector<Section> sections = {{"shear", "[shear]", {{"material", "\"../materials/synthetic/linear-500.csv\""}}}};
+  if (base == Base::circle) sections.push_back({"bending", "[bending]", {{"stiffness_N_m", "0.5"}}});
+  else
+    sections.insert(sections.end(), {{"bending", "[bending]", {{"rigidity_Nm", "5e-5"}}},
+                                     {"wind", "[wind]", {{"velocity_m_s", "[1.0, 0.0, -0.5]"}, {"coefficient_N_s_m3", "0.5"}}}});
+  sections.push_back({"drape", "[drape]", {{"support", "\"dome\""}}});
+  return sections;
 }
 
 // A 10 cm knit (a square of 4 x 4 divisions or a circle), 5 cm above a 3 cm dome, held by one
@@ -112,7 +116,7 @@ SceneText base_scene(Base base) {
            {"gravity", "[gravity]", {{"acceleration_m_s2", "9.81"}}},
            initial_section(base),
            {"solver", "[solver]",
-            {{"name", "\"relax\""},
+            {{"name", base == Base::arc ? "\"dynamic\"" : "\"relax\""},
              {"tolerance_N", "1e-3"},
              {"max_iterations", "1000"},
              {"C", "2.0"},
@@ -291,6 +295,15 @@ const std::vector<KeyRow>& key_table() {
       {"bending.rigidity_Nm",           T::number,    arc,  _,   R,  R,   R,   _,    "",
        {{"cap", "1e3", A, kSame}, {"beyond_cap", "1001.0", R, kSame}, {"missing", kRemove, R, "bending"},
         {"measured_denim", "6.42e-5", A, kSame}}},
+      {"wind",                           T::table,     arc,  A,   _,  _,   _,   _,    "", {}},
+      {"wind.velocity_m_s",              T::vec3,      arc,  R,   A,  R,   R,   _,    "",
+       {{"along_x", "[5.0, 0.0, 0.0]", A, kSame}, {"speed_of_sound", "[0.0, 0.0, 1000.0]", A, kSame},
+        {"beyond_1000_m_s", "[0.0, 800.0, 800.0]", R, kSame}}},
+      {"wind.coefficient_N_s_m3",        T::number,    arc,  R,   R,  R,   R,   _,    "",
+       {{"cap", "1e6", A, kSame}, {"beyond_cap", "1.1e6", R, kSame}}},
+      // Only dynamic models wind.
+      {"solver.name",                    T::only_extras, arc, _,  _,  _,   _,   _,    "",
+       {{"newton_in_a_wind", "\"newton\"", R, "wind"}, {"relax_in_a_wind", "\"relax\"", R, "wind"}}},
       {"drape",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
       // No support: a pin test, A_disc = 0.
       {"drape.support",                  T::text,      circle, A, _,  _,   _,   R,    "",

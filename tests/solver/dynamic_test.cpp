@@ -228,5 +228,65 @@ TEST(Dynamic, NonFiniteStartIsNumericalFailure) {
   EXPECT_EQ(summary.termination, Termination::numerical_failure);
 }
 
+// Seed 004's wind on a free, flat sheet, undamped: its springs stay at rest and only the wind
+// acts, so each step takes v_z to (v_z + a·w)/(1 + a), a = Δt·C/ρ: v_z = w·(1 − (1 + a)^−N)
+// after N steps (to 1e-12 relative), seed 004's continuous w·(1 − e^(−t·C/ρ)) to O(a). The
+// wind along the sheet (x) pushes nothing.
+TEST(DynamicWind, FreeSheetTakesUpTheWindAcrossIt) {
+  const Fabric sheet(FabricSpec{0.1, 0.1, 2, 2});
+  std::vector<Eigen::Vector3d> flat;
+  for (int k = 0; k < sheet.node_count(); ++k) flat.push_back(sheet.rest_position(k));
+  Model model{sheet, test::linear_table(500.0), test::linear_table(500.0),
+              std::vector<AxisMask>(flat.size(), 0), {}, flat};
+  const double across = 2.0, coefficient = 1.5, density = 0.2;
+  model.wind = Wind{{0.3, 0.0, across}, coefficient};
+  DynamicOptions options = to(1e-12);
+  options.damping = 0.0;
+  options.areal_density_kg_m2 = density;
+  options.max_iterations = 400;
+  Summary summary;
+  const SolverState state = run_dynamic(model, options, &summary);
+  EXPECT_EQ(summary.termination, Termination::not_converged);
+  const double dt = stable_time_step(model, node_masses(model, density), options.time_step_fraction).seconds;
+  const double a = dt * coefficient / density;
+  const double expected = across * (1.0 - std::pow(1.0 + a, -options.max_iterations));
+  const double continuous = across * (1.0 - std::exp(-options.max_iterations * dt * coefficient / density));
+  ASSERT_GT(expected, 0.1 * across) << "the test should see the sheet well under way";
+  for (std::size_t k = 0; k < flat.size(); ++k) {
+    EXPECT_NEAR(state.velocity[k].z(), expected, 1e-12 * across) << k;
+    EXPECT_EQ(state.velocity[k].head<2>(), Eigen::Vector2d::Zero()) << k;
+    EXPECT_NEAR(state.x[k].z(), state.x[0].z(), 1e-15) << "the sheet stays flat";
+    EXPECT_NEAR(state.velocity[k].z(), continuous, a * across) << k;
+  }
+}
+
+// A clamped, prestretched membrane in a wind across it bulges downwind and comes to rest where
+// its springs balance the wind at rest, C·A·(n·v_wind)·n: a rest set by C·v_wind alone (C = 1
+// at 4 m/s and C = 2 at 2 m/s agree, although their drags differ), mirrored by the opposite wind.
+// At the flat start an inner node's residual is its wind, C·A·|v_wind|. Distances within 1e-8 m:
+// e = 1e-9 N on springs whose out-of-plane stiffness is ~300 N/m.
+TEST(DynamicWind, ClampedMembraneRestsWhereItsSpringsHoldTheWind) {
+  const auto rest = [](const Eigen::Vector3d& velocity, double coefficient, Summary* summary) {
+    Model model = clamped_fabric(6, 0.01);
+    model.wind = Wind{velocity, coefficient};
+    const SolverState state = run_dynamic(model, to(1e-9), summary);
+    expect_converged_outside(model, state, *summary);
+    return state;
+  };
+  Summary summary;
+  const SolverState a = rest({0, 0, 4}, 1.0, &summary);
+  const double inner_area = (0.1 / 6) * (0.1 / 6);
+  EXPECT_NEAR(summary.history.front().residual_N, 1.0 * inner_area * 4.0, 1e-12);
+  const SolverState b = rest({0, 0, 2}, 2.0, &summary);
+  const SolverState mirrored = rest({0, 0, -4}, 1.0, &summary);
+  const Model model = clamped_fabric(6, 0.01);
+  EXPECT_GT(a.x[static_cast<std::size_t>(model.fabric.node(3, 3))].z(), 1e-4) << "downwind";
+  EXPECT_LE(max_distance(a.x, b.x), 1e-8);
+  for (std::size_t k = 0; k < a.x.size(); ++k) {
+    EXPECT_NEAR(mirrored.x[k].z(), -a.x[k].z(), 1e-8) << k;
+    EXPECT_NEAR((mirrored.x[k] - a.x[k]).head<2>().norm(), 0.0, 1e-8) << k;
+  }
+}
+
 }  // namespace
 }  // namespace fabform

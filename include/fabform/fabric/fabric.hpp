@@ -62,9 +62,15 @@ class Fabric {
     return {hinge_ids_.data() + hinge_offset_[k], hinge_ids_.data() + hinge_offset_[k + 1]};
   }
 
+  /// The faces a node is a corner of (indices into faces()).
+  SpringIndices faces_at(int node) const {
+    const auto k = static_cast<std::size_t>(node);
+    return {face_ids_.data() + face_offset_[k], face_ids_.data() + face_offset_[k + 1]};
+  }
+
   /// The area of fabric each node stands for (m²): its faces' areas shared equally among
   /// their corners, so they sum to flat_area().
-  std::vector<double> node_areas() const;
+  const std::vector<double>& node_areas() const { return node_areas_; }
   /// The flat fabric's area (m²), the sum of its faces.
   double flat_area() const { return flat_area_; }
 
@@ -96,6 +102,7 @@ class Fabric {
   void add_bend_springs();
   void add_hinges();
   void index_springs();
+  void index_faces();
   void mark_perimeter();
   void colour_nodes();
 
@@ -107,6 +114,9 @@ class Fabric {
   std::array<double, 2> spacing_ = {0.0, 0.0};
   std::vector<Face> faces_;
   std::vector<double> face_areas_;  // flat, per face
+  std::vector<std::size_t> face_offset_;
+  std::vector<int> face_ids_;
+  std::vector<double> node_areas_;
   double flat_area_ = 0.0;
   std::vector<Spring> springs_;
   std::vector<std::size_t> spring_offset_;

@@ -11,6 +11,7 @@
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/rigid_body.hpp"
 #include "fabform/material/tension_table.hpp"
+#include "fabform/model/wind.hpp"
 
 namespace fabform {
 
@@ -27,6 +28,7 @@ struct Model {
   std::optional<double> bending_rigidity_Nm = {};  // B of the fabric's hinges, when it has them
   std::optional<TensionTable> shear = {};   // the shear springs' table, when the fabric has them
   std::optional<TensionTable> bend = {};    // the bend springs' table, when the fabric has them
+  std::optional<Wind> wind = {};             // seed 004's wind, when the scene has one (dynamic only)
 
   /// The table a kind of spring follows; the model builder makes sure the fabric's kinds have one.
   const TensionTable& table(SpringKind kind) const {

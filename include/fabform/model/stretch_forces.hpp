@@ -12,7 +12,7 @@
 namespace fabform {
 
 /// R at `node` with the node moved to `at` and every other node where `x` has it: its springs'
-/// and hinges' forces plus its constant load.
+/// and hinges' forces, its constant load and the wind on it at rest (wind.hpp).
 Eigen::Vector3d node_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
                               const Eigen::Vector3d& at);
 

@@ -63,6 +63,15 @@ struct BendingSpec {
   SourceLocation where;
 };
 
+// [wind]: seed 004's wind, velocity_m_s (required: a wind has a direction) and its strength
+// coefficient_N_s_m3 (C per area of fabric). Only solver dynamic models it.
+struct WindSpec {
+  bool on = false;
+  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();
+  double coefficient_N_s_m3 = 0.0;
+  SourceLocation where;
+};
+
 // [drape]: the scene is a drape test of a circular fabric; its result gives the drape
 // coefficient, with the named body as the support disc (none: over a pin, A_disc = 0).
 struct DrapeSpec {
@@ -88,6 +97,7 @@ struct Scene {
   GravitySpec gravity;
   ShearSpec shear;
   BendingSpec bending;
+  WindSpec wind;
   DrapeSpec drape;
   InitialShape initial;
   SourceLocation initial_where;

@@ -1,0 +1,47 @@
+#pragma once
+// Seed 004's wind: on each node F = C [n·(v_wind − v)] n, n the node's averaged normal, v its
+// velocity. Only the part of the relative wind across the fabric pushes it, and a fabric moving
+// with the wind feels none. C here is per area of fabric (N·s/m³), the node's force C·A_k times
+// the bracket, so a region feels the same wind however finely it is meshed; seed 004's
+// per-node constant is C·A_k of its grid. The force has no potential and depends on velocity:
+// only `dynamic` models it. At rest (v = 0) it is a load that follows the fabric's normal,
+// and that part enters every node's resultant R (stretch_forces.hpp).
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "fabform/fabric/fabric.hpp"
+
+namespace fabform {
+
+struct Wind {
+  Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();
+  double coefficient_N_s_m3 = 0.0;  // C per area of fabric
+
+  /// "" when valid: a non-zero, finite velocity (a wind has a direction) and a positive C.
+  std::string invalid_reason() const;
+};
+
+/// The node's unit normal at positions x with the node at `at`: the sum of its faces' vector
+/// areas (seed 004 averages its triangles' normals; weighting by area keeps a sliver from
+/// tipping it), normalised. Zero where they cancel or vanish (a node folded flat on itself).
+/// A quadrilateral's vector area is half the cross product of its diagonals, exact for a
+/// warped one as well.
+Eigen::Vector3d node_normal(const Fabric& fabric, const std::vector<Eigen::Vector3d>& x, int node,
+                            const Eigen::Vector3d& at);
+inline Eigen::Vector3d node_normal(const Fabric& fabric, const std::vector<Eigen::Vector3d>& x, int node) {
+  return node_normal(fabric, x, node, x[static_cast<std::size_t>(node)]);
+}
+
+/// C·A·[n·(v_wind − v)]·n (N) on a node of area A (m²) with unit normal n moving at v.
+Eigen::Vector3d wind_force(const Wind& wind, double node_area_m2, const Eigen::Vector3d& normal,
+                           const Eigen::Vector3d& velocity_m_s);
+
+/// The velocity after a step of Δt under the wind's drag −C·A·(n·v)·n alone, taken implicitly:
+/// v − a/(1 + a)·(n·v)·n with a = Δt·C·A/m (`drag_step`, ≥ 0). Unconditionally stable however
+/// strong the wind, so the drag never shortens the time step; it is seed 004's explicit step
+/// as Δt → 0.
+Eigen::Vector3d after_wind_drag(double drag_step, const Eigen::Vector3d& normal, const Eigen::Vector3d& velocity_m_s);
+
+}  // namespace fabform

@@ -1,0 +1,51 @@
+#include "fabform/model/wind.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+#include <Eigen/Geometry>
+
+namespace fabform {
+
+std::string Wind::invalid_reason() const {
+  if (!velocity_m_s.allFinite()) return "the wind's velocity must be finite";
+  if (velocity_m_s.squaredNorm() == 0.0) return "wind without a direction: its velocity is zero";
+  if (!(std::isfinite(coefficient_N_s_m3) && coefficient_N_s_m3 > 0.0))
+    return "the wind's coefficient must be a positive, finite number";
+  return "";
+}
+
+namespace {
+
+// Twice the face's vector area, corner `moved` at `at`.
+Eigen::Vector3d twice_vector_area(const Face& face, const std::vector<Eigen::Vector3d>& x, int moved,
+                                  const Eigen::Vector3d& at) {
+  const auto p = [&](int c) -> const Eigen::Vector3d& {
+    const int node = face.corner[static_cast<std::size_t>(c)];
+    return node == moved ? at : x[static_cast<std::size_t>(node)];
+  };
+  if (face.corners == 3) return (p(1) - p(0)).cross(p(2) - p(0));
+  return (p(2) - p(0)).cross(p(3) - p(1));
+}
+
+}  // namespace
+
+Eigen::Vector3d node_normal(const Fabric& fabric, const std::vector<Eigen::Vector3d>& x, int node,
+                            const Eigen::Vector3d& at) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const int face : fabric.faces_at(node))
+    sum += twice_vector_area(fabric.faces()[static_cast<std::size_t>(face)], x, node, at);
+  const double length = sum.norm();
+  return length > 0.0 ? Eigen::Vector3d(sum / length) : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d wind_force(const Wind& wind, double node_area_m2, const Eigen::Vector3d& normal,
+                           const Eigen::Vector3d& velocity_m_s) {
+  return wind.coefficient_N_s_m3 * node_area_m2 * normal.dot(wind.velocity_m_s - velocity_m_s) * normal;
+}
+
+Eigen::Vector3d after_wind_drag(double drag_step, const Eigen::Vector3d& normal, const Eigen::Vector3d& velocity_m_s) {
+  return velocity_m_s - drag_step / (1.0 + drag_step) * normal.dot(velocity_m_s) * normal;
+}
+
+}  // namespace fabform
