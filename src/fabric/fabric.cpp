@@ -177,8 +177,25 @@ void Fabric::index_springs() {
   }
 }
 
-// Discrete-shell hinges: one across every side two faces share, each face's far point the
-// midpoint of its far side (a triangle's far corner). Indexed by every node a hinge reaches.
+// The affine dependency of a hinge's four flat points (hinge.hpp): a far point at distance d
+// from the edge's line weighs 1/d, and the edge's nodes balance the far points' positions
+// along the edge, t from 0 at edge[0] to 1 at edge[1]. The far points lie on either side of
+// the edge, so their weights balance across it as well.
+std::array<double, 4> Fabric::bend_weights(const Hinge& h) const {
+  const Eigen::Vector3d q0 = rest_position(h.edge[0]), edge = rest_position(h.edge[1]) - q0;
+  std::array<double, 4> weight = {0.0, 0.0, 0.0, 0.0};
+  for (std::size_t w = 0; w < 2; ++w) {
+    const Eigen::Vector3d r = 0.5 * (rest_position(h.wing[w][0]) + rest_position(h.wing[w][1])) - q0;
+    const double t = r.dot(edge) / edge.squaredNorm();
+    weight[2 + w] = 1.0 / (r - t * edge).norm();
+    weight[0] -= weight[2 + w] * (1.0 - t);
+    weight[1] -= weight[2 + w] * t;
+  }
+  return weight;
+}
+
+// Hinges: one across every side two faces share, each face's far point the midpoint of its far
+// side (a triangle's far corner). Indexed by every node a hinge reaches.
 void Fabric::add_hinges() {
   const auto n = static_cast<std::size_t>(node_count());
   hinge_offset_.assign(n + 1, 0);
@@ -204,6 +221,7 @@ void Fabric::add_hinges() {
         area += face_areas_[face];
       }
       h.shape_factor = (rest_position(q) - rest_position(p)).squaredNorm() / area;
+      h.weight = bend_weights(h);
       hinges_.push_back(h);
     }
   }

@@ -180,7 +180,7 @@ void add_bending(const Scene& scene, Model* model) {
   if (scene.bending.rigidity_Nm > 0.0) {
     model->bending_rigidity_Nm = scene.bending.rigidity_Nm;
     std::snprintf(text, sizeof text,
-                  "bending: discrete-shell hinges across %zu face sides, flexural rigidity %.6g N·m",
+                  "bending: hinges across %zu face sides (quadratic bending of a flat fabric), flexural rigidity %.6g N·m",
                   model->fabric.hinges().size(), scene.bending.rigidity_Nm);
   } else {
     const double k = scene.bending.stiffness_N_m;

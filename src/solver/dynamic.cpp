@@ -62,19 +62,17 @@ double spring_stiffness_bound(const Model& model, const Spring& s) {
   return s.width * steepest_slope(model.table(s.kind)) / s.rest_length;
 }
 
-// A hinge's stiffness 2·B·s·∇θ∇θᵀ in the flat fabric: half of each node's row sum, which is
-// what a spring's k is to the bound below (its block's row sums are 2k).
+// A hinge's stiffness 2·B·s·c·cᵀ (per axis): half of each node's row sum, which is what a
+// spring's k is to the bound below (its block's row sums are 2k).
 void add_hinge_stiffness(const Model& model, std::vector<double>* stiffness) {
   if (!model.bending_rigidity_Nm) return;
-  std::vector<Eigen::Vector3d> rest;
-  for (int k = 0; k < model.node_count(); ++k) rest.push_back(model.fabric.rest_position(k));
   for (const Hinge& h : model.fabric.hinges()) {
-    const HingeGradient g = hinge_gradient(h, rest);
+    const HingeStencil stencil = hinge_stencil(h);
     double sum = 0.0;
-    for (int k = 0; k < g.count; ++k) sum += g.d_theta[static_cast<std::size_t>(k)].norm();
-    for (int k = 0; k < g.count; ++k)
-      (*stiffness)[static_cast<std::size_t>(g.node[static_cast<std::size_t>(k)])] +=
-          *model.bending_rigidity_Nm * h.shape_factor * g.d_theta[static_cast<std::size_t>(k)].norm() * sum;
+    for (int k = 0; k < stencil.count; ++k) sum += std::abs(stencil.weight[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < stencil.count; ++k)
+      (*stiffness)[static_cast<std::size_t>(stencil.node[static_cast<std::size_t>(k)])] +=
+          *model.bending_rigidity_Nm * h.shape_factor * std::abs(stencil.weight[static_cast<std::size_t>(k)]) * sum;
   }
 }
 

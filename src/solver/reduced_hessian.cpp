@@ -32,18 +32,17 @@ void add_spring(const FreeDirections& d, int a, int b, const Eigen::Matrix3d& k,
   else add_block(d, a, b, -k, out);
 }
 
-// A hinge adds 2·B·s·max(cos θ, 0)·∇θ∇θᵀ over the nodes it reaches (the Gauss–Newton part of
-// its Hessian: positive semi-definite, and exact where the fabric is flat, θ = 0); each pair
-// once, below the diagonal.
-void add_hinge(const FreeDirections& d, const HingeGradient& g, double scale, Triplets* out) {
-  for (int r = 0; r < g.count; ++r)
+// A hinge adds its Hessian 2·B·s·(c_a·c_b)·I over each pair of the nodes it reaches: exact,
+// constant and positive semi-definite (hinge_bending.hpp); each pair once, below the diagonal.
+void add_hinge(const FreeDirections& d, const HingeStencil& stencil, double scale, Triplets* out) {
+  for (int r = 0; r < stencil.count; ++r)
     for (int c = 0; c <= r; ++c) {
-      const int a = g.node[static_cast<std::size_t>(r)], b = g.node[static_cast<std::size_t>(c)];
-      const Eigen::Matrix3d k =
-          scale * g.d_theta[static_cast<std::size_t>(r)] * g.d_theta[static_cast<std::size_t>(c)].transpose();
+      const int a = stencil.node[static_cast<std::size_t>(r)], b = stencil.node[static_cast<std::size_t>(c)];
+      const Eigen::Matrix3d k = scale * stencil.weight[static_cast<std::size_t>(r)] *
+                                stencil.weight[static_cast<std::size_t>(c)] * Eigen::Matrix3d::Identity();
       if (r == c) add_block(d, a, a, k, out);
       else if (d.offset[static_cast<std::size_t>(a)] > d.offset[static_cast<std::size_t>(b)]) add_block(d, a, b, k, out);
-      else add_block(d, b, a, k.transpose(), out);
+      else add_block(d, b, a, k, out);
     }
 }
 
@@ -66,11 +65,8 @@ Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
   for (std::size_t i = 0; i < springs.size(); ++i)
     add_spring(directions, springs[i].a, springs[i].b, stiffness[i], &triplets);
   if (model.bending_rigidity_Nm)
-    for (const Hinge& h : model.fabric.hinges()) {
-      const HingeGradient g = hinge_gradient(h, x);
-      const double bent = std::cos(g.theta);
-      if (bent > 0.0) add_hinge(directions, g, 2.0 * *model.bending_rigidity_Nm * h.shape_factor * bent, &triplets);
-    }
+    for (const Hinge& h : model.fabric.hinges())
+      add_hinge(directions, hinge_stencil(h), 2.0 * *model.bending_rigidity_Nm * h.shape_factor, &triplets);
   Eigen::SparseMatrix<double> hessian(directions.unknowns(), directions.unknowns());
   hessian.setFromTriplets(triplets.begin(), triplets.end());
   return hessian;

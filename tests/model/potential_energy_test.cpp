@@ -97,7 +97,7 @@ TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithShearAndBendSprings) {
   }
 }
 
-// Discrete-shell hinges with a measured flexural rigidity, crumpled enough that they bend.
+// Hinges with a measured flexural rigidity, crumpled enough that they bend.
 TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithHinges) {
   FabricSpec spec{0.1, 0.1, 0, 0};
   spec.shape = FabricSpec::Shape::circle, spec.mesh = FabricSpec::Mesh::arc, spec.rings = 3, spec.spokes = 8;

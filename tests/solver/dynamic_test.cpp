@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/spring_energy.hpp"
 #include "fabform/solver/newton.hpp"
 #include "support/clamped_fabric.hpp"
@@ -99,26 +100,55 @@ TEST(NodeMasses, ShareTheFabricByArea) {
   EXPECT_NEAR(total, 0.2 * 0.1 * 0.1, 1e-15);
 }
 
+// The exact stiffness at the start: the springs' Hessians and the hinges' constant 2·B·s·c·cᵀ.
+Eigen::MatrixXd start_stiffness(const Model& model) {
+  const int n = 3 * model.node_count();
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);
+  for (const Spring& s : model.fabric.springs()) {
+    const Matrix6d h = spring_hessian(model.start[static_cast<std::size_t>(s.a)],
+                                      model.start[static_cast<std::size_t>(s.b)], s, model.table(s.kind));
+    const int at[2] = {3 * s.a, 3 * s.b};
+    for (int p = 0; p < 2; ++p)
+      for (int q = 0; q < 2; ++q) k.block<3, 3>(at[p], at[q]) += h.block<3, 3>(3 * p, 3 * q);
+  }
+  if (model.bending_rigidity_Nm)
+    for (const Hinge& h : model.fabric.hinges()) {
+      const HingeStencil c = hinge_stencil(h);
+      for (int p = 0; p < c.count; ++p)
+        for (int q = 0; q < c.count; ++q)
+          k.block<3, 3>(3 * c.node[p], 3 * c.node[q]) +=
+              2.0 * *model.bending_rigidity_Nm * h.shape_factor * c.weight[p] * c.weight[q] * Eigen::Matrix3d::Identity();
+    }
+  return k;
+}
+
+// A fabric whose hinges are far stiffer than its springs.
+Model hinged_fabric() {
+  FabricSpec spec{0.1, 0.1, 6, 6};
+  spec.hinges = true;
+  Model model = clamped_fabric(6, 0.05);
+  model.fabric = Fabric(spec);
+  model.warp = model.weft = test::linear_table(1e-3);
+  model.bending_rigidity_Nm = 1e-3;
+  return model;
+}
+
 // Brute force: the largest angular frequency ω of M⁻¹K over the free coordinates, K the exact
-// stiffness of a prestretched (taut) and of a lifted (slack-edged) fabric. Symplectic Euler is
-// stable for Δt·ω < 2; the step must keep that, and not be needlessly small (within 4×).
+// stiffness of a prestretched (taut), a lifted (slack-edged) and a hinged fabric. Symplectic
+// Euler is stable for Δt·ω < 2; the step must keep that, and not be needlessly small (within 4×).
 TEST(StableTimeStep, KeepsUnderTheLargestFrequencyOfTheStiffness) {
-  for (const double lift : {0.0, 0.02}) {
-    Model model = clamped_fabric(6, 0.05);
-    lift_interior(model, lift);
+  std::vector<Model> models;
+  models.push_back(clamped_fabric(6, 0.05));
+  models.push_back(clamped_fabric(6, 0.05));
+  lift_interior(models.back(), 0.02);
+  models.push_back(hinged_fabric());
+  for (std::size_t index = 0; index < models.size(); ++index) {
+    const Model& model = models[index];
     const std::vector<double> mass = node_masses(model, 0.2);
     const TimeStep step = stable_time_step(model, mass, 1.0);
-    const int n = 3 * model.node_count();
-    Eigen::MatrixXd k = Eigen::MatrixXd::Zero(n, n);
-    for (const Spring& s : model.fabric.springs()) {
-      const Matrix6d h = spring_hessian(model.start[static_cast<std::size_t>(s.a)],
-                                        model.start[static_cast<std::size_t>(s.b)], s, model.table(s.kind));
-      const int at[2] = {3 * s.a, 3 * s.b};
-      for (int p = 0; p < 2; ++p)
-        for (int q = 0; q < 2; ++q) k.block<3, 3>(at[p], at[q]) += h.block<3, 3>(3 * p, 3 * q);
-    }
+    const Eigen::MatrixXd k = start_stiffness(model);
     std::vector<int> free;
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < k.rows(); ++i)
       if (!(model.locks[static_cast<std::size_t>(i / 3)] & (1 << (i % 3)))) free.push_back(i);
     Eigen::MatrixXd scaled(free.size(), free.size());
     for (std::size_t p = 0; p < free.size(); ++p)
@@ -126,9 +156,9 @@ TEST(StableTimeStep, KeepsUnderTheLargestFrequencyOfTheStiffness) {
         scaled(p, q) = k(free[p], free[q]) / std::sqrt(mass[static_cast<std::size_t>(free[p] / 3)] *
                                                        mass[static_cast<std::size_t>(free[q] / 3)]);
     const double omega = std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scaled).eigenvalues().maxCoeff());
-    EXPECT_LT(step.seconds * omega, 2.0) << "lift " << lift;
-    EXPECT_GT(step.seconds * omega, 0.5) << "lift " << lift;
-    EXPECT_LE(step.seconds, step.seed_limit);
+    EXPECT_LT(step.seconds * omega, 2.0) << "taut, lifted, hinged: " << index;
+    EXPECT_GT(step.seconds * omega, 0.5) << index;
+    EXPECT_LE(step.seconds, step.seed_limit) << index;
   }
 }
 

@@ -101,6 +101,7 @@ class Fabric {
   void add_shear_springs();
   void add_bend_springs();
   void add_hinges();
+  std::array<double, 4> bend_weights(const Hinge& hinge) const;
   void index_springs();
   void index_faces();
   void mark_perimeter();

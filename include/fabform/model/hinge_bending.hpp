@@ -1,9 +1,15 @@
 #pragma once
-// The discrete-shell bending of a hinge: its energy E = 2·B·s·(1 − cos θ), s the hinge's shape
-// factor and θ its dihedral angle (0 in the flat fabric), which is B·s·θ² for small θ, the
-// continuum's B·κ²/2 per area (Grinspun et al. 2003), and stays smooth and bounded where a
-// fold closes (θ → ±π) on a mesh cell; the gradient of θ (Bridson et al. 2003); and a positive
-// semi-definite stiffness 2·B·s·max(cos θ, 0)·∇θ∇θᵀ (the Gauss–Newton part of E's Hessian).
+// The bending of a hinge in the quadratic form of Bergou et al. 2006 for a flat rest state:
+// E = B·s·|k|², s the hinge's shape factor and k = Σ wᵢ·pᵢ its bend vector over the edge's two
+// nodes and the two far points, the weights being the four flat points' affine dependency
+// (Σ wᵢ = 0, Σ wᵢ·qᵢ = 0). So k vanishes for every rigid or affine motion of the flat fabric,
+// and a fold of one face by θ about the edge gives |k| = 2·sin(θ/2), E = 2·B·s·(1 − cos θ):
+// exactly the discrete-shell energy (Grinspun et al. 2003), which is B·s·θ² for small θ, the
+// continuum's B·κ²/2 per area. Unlike the dihedral angle, k is linear in the positions: the
+// force is bounded where a face collapses (tension-only cells shrink for free, and a
+// collapsing face's angle turns infinitely fast), and the Hessian 2·B·s·w·wᵀ is constant and
+// positive semi-definite. For a deformation that is not isometric, a cell shrinking unevenly in
+// its own plane, k is not zero: the hinge then resists the unevenness as well.
 #include <array>
 #include <vector>
 
@@ -14,35 +20,27 @@
 
 namespace fabform {
 
-/// The hinge's four points: its edge's two nodes and each face's far point, with node `moved`
-/// at `at` (none when moved is -1).
-std::array<Eigen::Vector3d, 4> hinge_points(const Hinge& hinge, const std::vector<Eigen::Vector3d>& x,
-                                            int moved = -1, const Eigen::Vector3d& at = Eigen::Vector3d::Zero());
+/// The hinge's bend vector k = Σ wᵢ·pᵢ at x with node `moved` at `at` (none when moved is -1);
+/// |k| = 2·sin(θ/2) for a fold by θ (dimensionless).
+Eigen::Vector3d bend_vector(const Hinge& hinge, const std::vector<Eigen::Vector3d>& x, int moved = -1,
+                            const Eigen::Vector3d& at = Eigen::Vector3d::Zero());
 
-/// Signed dihedral angle θ in (−π, π] across the edge; 0 when both faces lie in one plane,
-/// and 0 as well where a face has collapsed to a line (it has no normal).
-double dihedral_angle(const std::array<Eigen::Vector3d, 4>& p);
-
-/// ∂θ/∂p for the four points (zero where a face has collapsed).
-std::array<Eigen::Vector3d, 4> dihedral_angle_gradient(const std::array<Eigen::Vector3d, 4>& p);
-
-/// 2·B·s·(1 − cos θ) (J), node `moved` at `at`.
+/// B·s·|k|² (J), node `moved` at `at`.
 double hinge_energy(const Hinge& hinge, double rigidity_Nm, const std::vector<Eigen::Vector3d>& x,
                     int moved = -1, const Eigen::Vector3d& at = Eigen::Vector3d::Zero());
 
-/// The hinge's angle θ, the nodes it reaches (up to six, each once) and ∂θ/∂x for each.
-struct HingeGradient {
-  double theta = 0.0;
+/// The nodes a hinge reaches (up to six, each once) and each one's weight in k = Σ cⱼ·xⱼ
+/// (a far point's weight is shared by its two nodes): ∂k/∂xⱼ = cⱼ·I.
+struct HingeStencil {
   std::array<int, 6> node{};
-  std::array<Eigen::Vector3d, 6> d_theta{};
+  std::array<double, 6> weight{};
   int count = 0;
 };
-HingeGradient hinge_gradient(const Hinge& hinge, const std::vector<Eigen::Vector3d>& x, int moved = -1,
-                             const Eigen::Vector3d& at = Eigen::Vector3d::Zero());
+HingeStencil hinge_stencil(const Hinge& hinge);
 
 /// The model's bending: the sum over its fabric's hinges (0 without bending rigidity).
 double bending_energy(const Model& model, const std::vector<Eigen::Vector3d>& x);
-/// The hinges' force on `node` placed at `at`, −∂E/∂x_node.
+/// The hinges' force on `node` placed at `at`, −∂E/∂x_node = −Σ 2·B·s·c_node·k.
 Eigen::Vector3d bending_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
                                  const Eigen::Vector3d& at);
 /// The energy of the hinges that reach `node`, with it at `at`.

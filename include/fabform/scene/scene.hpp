@@ -54,7 +54,7 @@ struct ShearSpec {
   SourceLocation material_where;
 };
 
-// [bending]: seed 004's bend springs (stiffness_N_m) or discrete-shell hinges with the
+// [bending]: seed 004's bend springs (stiffness_N_m) or hinges with the
 // fabric's flexural rigidity (rigidity_Nm); one of the two.
 struct BendingSpec {
   bool on = false;
