@@ -22,6 +22,7 @@ Usage (after tools/setup.sh, from anywhere):
   /usr/bin/python3 tools/drape_meshes.py --levels 1      # Figure 9 alone: seconds
   /usr/bin/python3 tools/drape_meshes.py --smoke         # the test suite's check: tiny meshes
   /usr/bin/python3 tools/drape_meshes.py --scene scenes/cusick.toml --divisions 40 --rings 20 --spokes 64 --levels 1,2,3
+  /usr/bin/python3 tools/drape_meshes.py --rigidity 6.42e-5 --levels 1,2   # the pin with hinges
 Standard library only.
 """
 import argparse
@@ -38,6 +39,7 @@ MESHES = ("quadrangular", "triangular", "arc")
 LEVEL_ONE = {"divisions": 24, "rings": 15, "spokes": 32}  # seed 000: similar numbers of nodes
 SMOKE = {"divisions": 8, "rings": 4, "spokes": 12}
 MESH_KEYS = re.compile(r"^\s*(mesh|divisions|rings|spokes)\s*=")
+BENDING_KEYS = re.compile(r"^\s*(stiffness_N_m|rigidity_Nm)\s*=")
 PATH_KEY = re.compile(r'^(\s*(?:warp|weft|mesh|material)\s*=\s*)"([^"]+)"')  # relative to the scene
 COLUMNS = ["mesh", "level", "nodes", "springs", "solver", "iterations", "residual_N", "converged",
            "drape_coefficient", "folds", "solve_seconds"]
@@ -57,8 +59,9 @@ def shear_table(scene_text, scene_dir):
     return (scene_dir / warp.group(1)).resolve().with_name(warp.group(1).split("/")[-1][:-9] + "_shear.csv")
 
 
-def variant(scene_text, scene_dir, mesh, level, base):
-    """The scene with the [fabric] mesh keys replaced and its relative paths made absolute."""
+def variant(scene_text, scene_dir, mesh, level, base, rigidity=None):
+    """The scene with the [fabric] mesh keys replaced, its [bending] made hinges of `rigidity`
+    (N·m) when given, and its relative paths made absolute."""
     out, section = [], ""
     for line in scene_text.splitlines():
         header = re.match(r"^\s*\[+\s*([A-Za-z_]+)", line)
@@ -66,6 +69,8 @@ def variant(scene_text, scene_dir, mesh, level, base):
             section = header.group(1)
         if section == "fabric" and MESH_KEYS.match(line):
             continue
+        if rigidity is not None and section == "bending" and BENDING_KEYS.match(line):
+            line = "rigidity_Nm = %r" % rigidity
         line = PATH_KEY.sub(lambda m: '%s"%s"' % (m.group(1), (scene_dir / m.group(2)).resolve()), line)
         out.append(line)
         if section == "fabric" and re.match(r"^\s*diameter_m\s*=", line):
@@ -132,6 +137,8 @@ def main(argv=None):
     parser.add_argument("--spokes", type=int, default=LEVEL_ONE["spokes"], help="arc mesh spokes at level 1")
     parser.add_argument("--meshes", default=",".join(MESHES), help="which meshes, comma-separated")
     parser.add_argument("--solver", default=None, help="override the scene's solver")
+    parser.add_argument("--rigidity", type=float, default=None,
+                        help="bend with hinges of this flexural rigidity (N·m) in place of the scene's [bending]")
     parser.add_argument("--out", default=str(ROOT / "results" / "drape_meshes"))
     parser.add_argument("--fabform", default=str(FABFORM), help="the fabform binary to run")
     parser.add_argument("--smoke", action="store_true", help="tiny meshes, levels 1 and 2")
@@ -143,6 +150,8 @@ def main(argv=None):
     out = pathlib.Path(args.out)
     (out / "scenes").mkdir(parents=True, exist_ok=True)
     extra = ["--solver", args.solver] if args.solver else []
+    if args.rigidity is not None and not (args.rigidity > 0 and re.search(r"^\s*\[bending\]", scene_text, re.M)):
+        sys.exit("drape_meshes: --rigidity needs a positive value and a scene with a [bending] table")
     meshes = args.meshes.split(",")
     for mesh in meshes:
         if mesh not in MESHES:
@@ -152,7 +161,7 @@ def main(argv=None):
         for mesh in meshes:
             name = "%s_%d" % (mesh, level)
             path = out / "scenes" / (name + ".toml")
-            path.write_text(variant(scene_text, scene_path.parent, mesh, level, base))
+            path.write_text(variant(scene_text, scene_path.parent, mesh, level, base, args.rigidity))
             status, result = run(args.fabform, path, out / "runs" / name, extra)
             if result is None or status not in (0, 3):
                 failed.append("%s: exit %d, see %s" % (name, status, stderr_of(out / "runs" / name)))
