@@ -114,6 +114,7 @@ std::string result_json(const RunRecord& run) {
   }
   j["modelled"] = run.model.modelled;
   j["materials"] = {{"warp", run.scene.warp_path}, {"weft", run.scene.weft_path}};
+  if (run.scene.shear.on) j["materials"]["shear"] = run.scene.shear.material_path;
   nlohmann::json bodies = nlohmann::json::array();
   for (const RigidBody& b : run.model.bodies)
     bodies.push_back({{"name", b.name()}, {"triangles", b.mesh().triangles.size()}});

@@ -7,6 +7,7 @@
 #include "fabform/io/sha256.hpp"
 #include "fabform/output/run_inputs.hpp"
 #include "fabform/scene/scene_toml.hpp"
+#include "support/cli.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fabform {
@@ -47,6 +48,17 @@ TEST_F(RunInputsTest, AChangedFileIsNamed) {
   const std::string change = input_change(before, describe());
   EXPECT_NE(change.find("weft"), std::string::npos) << change;
   EXPECT_NE(change.find("has changed"), std::string::npos) << change;
+}
+
+// A shear table is read as well: it is hashed, and a change to it is named.
+TEST_F(RunInputsTest, TheShearTableIsHashed) {
+  dir.write("shear.csv", "strain,tension_N_per_m\n0,0\n1,50\n");
+  dir.write("scene.toml", test::slurp(dir.path("scene.toml")) + "[shear]\nmaterial = \"shear.csv\"\n");
+  const RunInputs before = describe();
+  ASSERT_EQ(before.files.size(), 5u);
+  EXPECT_EQ(before.files[3].role, "shear");
+  dir.write("shear.csv", "strain,tension_N_per_m\n0,0\n1,51\n");
+  EXPECT_NE(input_change(before, describe()).find("shear"), std::string::npos);
 }
 
 TEST_F(RunInputsTest, ReadBackFromResultJson) {
