@@ -45,7 +45,7 @@ Eigen::Vector3d wind_force(const Wind& wind, double node_area_m2, const Eigen::V
 }
 
 Eigen::Vector3d after_wind_drag(double drag_step, const Eigen::Vector3d& normal, const Eigen::Vector3d& velocity_m_s) {
-  return velocity_m_s - drag_step / (1.0 + drag_step) * normal.dot(velocity_m_s) * normal;
+  return velocity_m_s - drag_step / (1.0 + drag_step * normal.squaredNorm()) * normal.dot(velocity_m_s) * normal;
 }
 
 }  // namespace fabform

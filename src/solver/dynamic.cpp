@@ -160,11 +160,12 @@ class Dynamics {
     if (contact.active() && remove_locked(r, lock).dot(contact.normal) > 0.0)
       contact = NodeContact{};  // R points out of the body: the node leaves it (§3.2.2)
     Eigen::Vector3d& v = state_.velocity[i];
-    v = (1.0 - damping_) * v + step_.seconds / mass_[i] * r;
+    v = sliding((1.0 - damping_) * v + step_.seconds / mass_[i] * r, lock, contact);
+    // The drag acts within the directions the node may move in: its normal projected on them,
+    // so that no reaction on a held axis leaks into a free one through (n·v)·n.
     if (model_.wind)
       v = after_wind_drag(step_.seconds * model_.wind->coefficient_N_s_m3 * model_.fabric.node_areas()[i] / mass_[i],
-                          normals_[i], v);
-    v = sliding(v, lock, contact);
+                          sliding(normals_[i], lock, contact), v);
     const NodeMove moved = move_node(model_, k, state_.x[i], step_.seconds * v, contact);
     if (moved.contact.active()) v -= std::min(v.dot(moved.contact.normal), 0.0) * moved.contact.normal;
     state_.x[i] = moved.x;

@@ -145,6 +145,10 @@ TEST(WindDrag, TakesOnlyTheNormalVelocityAndNeverOvershoots) {
     EXPECT_LE(z, v.z()) << a;
   }
   EXPECT_EQ(after_wind_drag(1.0, Eigen::Vector3d::Zero(), v), v) << "no normal, no drag";
+  // A projected normal (a node held in z, n tilted): the step solves v' = v − a·(n·v')·n.
+  const Eigen::Vector3d tilted(0.6, 0.0, 0.0), free(0.5, 0.3, 0.0);
+  const Eigen::Vector3d after = after_wind_drag(2.0, tilted, free);
+  EXPECT_LT((after - (free - 2.0 * tilted.dot(after) * tilted)).norm(), 1e-15);
 }
 
 TEST(Wind, NeedsADirectionAndAStrength) {

@@ -318,5 +318,18 @@ TEST(DynamicWind, ClampedMembraneRestsWhereItsSpringsHoldTheWind) {
   }
 }
 
+// A node held in x and y only: the reaction on its held axes must not leak into its free one
+// through the drag's (n·v)·n, or the run settles off equilibrium and never converges.
+TEST(DynamicWind, PartlyHeldNodeComesToRest) {
+  Model model = clamped_fabric(6, 0.01);
+  model.locks[static_cast<std::size_t>(model.fabric.node(2, 3))] = kLockX | kLockY;
+  for (const double coefficient : {1.0, 20.0}) {
+    model.wind = Wind{{0.0, 0.0, 4.0}, coefficient};
+    Summary summary;
+    const SolverState state = run_dynamic(model, to(1e-9), &summary);
+    expect_converged_outside(model, state, summary);
+  }
+}
+
 }  // namespace
 }  // namespace fabform

@@ -39,9 +39,10 @@ Eigen::Vector3d wind_force(const Wind& wind, double node_area_m2, const Eigen::V
                            const Eigen::Vector3d& velocity_m_s);
 
 /// The velocity after a step of Δt under the wind's drag −C·A·(n·v)·n alone, taken implicitly:
-/// v − a/(1 + a)·(n·v)·n with a = Δt·C·A/m (`drag_step`, ≥ 0). Unconditionally stable however
-/// strong the wind, so the drag never shortens the time step; it is seed 004's explicit step
-/// as Δt → 0.
+/// v − a/(1 + a·|n|²)·(n·v)·n with a = Δt·C·A/m (`drag_step`, ≥ 0). Unconditionally stable
+/// however strong the wind, so the drag never shortens the time step; it is seed 004's explicit
+/// step as Δt → 0. n is the unit normal, or its projection on the directions a held node or a
+/// node on a body may move in (then v lies in them, and so does the result).
 Eigen::Vector3d after_wind_drag(double drag_step, const Eigen::Vector3d& normal, const Eigen::Vector3d& velocity_m_s);
 
 }  // namespace fabform
