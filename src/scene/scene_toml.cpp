@@ -35,7 +35,7 @@ constexpr double kMaxLength_m = 1e6;
 // An angle is written within one turn; far beyond it (1e300) the remainder is rounding noise,
 // and nothing downstream notices.
 constexpr double kMaxAngle_deg = 360.0;
-// A wind beyond the speed of sound is a unit mistake.
+// A wind of a thousand metres a second, three times the speed of sound, is a unit mistake.
 constexpr double kFastestWind_m_s = 1000.0;
 
 // %g, with the exponent as a scene writes it: 1e6, not 1e+06.
@@ -451,10 +451,14 @@ Scene read_scene(const toml::table& root, const std::string& path,
     fabric.fail("mesh", "a triangular mesh has diagonal springs: name their bias table in a [shear] table "
                         "(material = FILE)");
   read_initial(r.table("initial", false), &scene);
-  read_solver(r.table("solver", false), &scene);
+  TableReader solver = r.table("solver", false);
+  read_solver(solver, &scene);
   if (scene.wind.on && scene.solver.name != "dynamic")
-    throw InputError(scene.wind.where, "wind depends on the fabric's velocity (seed 004): only solver dynamic models it, "
-                                       "and the scene's solver is " + scene.solver.name);
+    solver.fail("name", "the scene has wind (" +
+                            (scene.wind.where.line > 0 ? "line " + std::to_string(scene.wind.where.line)
+                                                       : std::string("from the command line")) +
+                            "), which depends on the fabric's velocity (seed 004): only solver dynamic models it, not " +
+                            scene.solver.name);
   read_output(r.table("output", false), &scene);
   r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "drape",
                     "initial", "solver", "output"});

@@ -1,6 +1,5 @@
 #include "solver/reduced_hessian.hpp"
 
-#include <cmath>
 #include <cstddef>
 
 #include "fabform/model/hinge_bending.hpp"

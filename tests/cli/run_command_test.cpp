@@ -167,7 +167,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadDrape{"WindStill", "pin", "--solver dynamic --set wind.velocity_m_s=[0,0,0] --set wind.coefficient_N_s_m3=1",
                  "wind.velocity_m_s: wind without a direction: the velocity is zero"},
         BadDrape{"WindForNewton", "cusick", "--set wind.velocity_m_s=[1,0,0] --set wind.coefficient_N_s_m3=1",
-                 "only solver dynamic models it"}),
+                 "only solver dynamic models it, not newton"},
+        BadDrape{"NewtonInTheWindOverridden", "pin",
+                 "--solver newton --set wind.velocity_m_s=[1,0,0] --set wind.coefficient_N_s_m3=1",
+                 "command line --set: solver.name: the scene has wind"}),
     [](const auto& case_info) { return std::string(case_info.param.name); });
 
 TEST_F(RunCommand, TriangularMeshWithoutAShearTableIsRefused) {

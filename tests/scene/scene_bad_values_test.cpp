@@ -303,7 +303,8 @@ const std::vector<KeyRow>& key_table() {
        {{"cap", "1e6", A, kSame}, {"beyond_cap", "1.1e6", R, kSame}}},
       // Only dynamic models wind.
       {"solver.name",                    T::only_extras, arc, _,  _,  _,   _,   _,    "",
-       {{"newton_in_a_wind", "\"newton\"", R, "wind"}, {"relax_in_a_wind", "\"relax\"", R, "wind"}}},
+       {{"newton_in_a_wind", "\"newton\"", R, kSame}, {"relax_in_a_wind", "\"relax\"", R, kSame},
+        {"missing_in_a_wind", kRemove, R, kSame}}},
       {"drape",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
       // No support: a pin test, A_disc = 0.
       {"drape.support",                  T::text,      circle, A, _,  _,   _,   R,    "",
