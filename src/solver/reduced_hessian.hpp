@@ -1,6 +1,7 @@
 #pragma once
 // Newton's matrix: the Hessian of the fabric's stretch energy with every spring's stiffness
-// projected positive semi-definite, in the nodes' free directions (free_directions.hpp).
+// projected positive semi-definite, plus the hinges' exact constant Hessian, in the nodes' free
+// directions (free_directions.hpp).
 #include <vector>
 
 #include <Eigen/Core>

@@ -3,10 +3,9 @@
 // side turns one face against the other by an angle θ, which the hinge's energy penalises as
 // B·(|e|² / (A₁ + A₂))·θ² for small θ (Grinspun et al. 2003; the form taken is Bergou's, in
 // hinge_bending.hpp), B the fabric's flexural rigidity (N·m): for four-sided cells bent across a
-// side, B·κ²/2 per area. Between
-// two triangles (only round an arc mesh's centre) the same formula is stiffer than the
-// continuum, by about 2× on equilateral triangles. A four-sided face's far side stands in for
-// its far corner: its midpoint, the mean of two nodes.
+// side, B·κ²/2 per area. Between two triangles (only round an arc mesh's centre) the same
+// formula is stiffer than the continuum, by about 2× on equilateral triangles. A four-sided
+// face's far side stands in for its far corner: its midpoint, the mean of two nodes.
 #include <array>
 
 namespace fabform {
