@@ -1,17 +1,27 @@
 #include "fabform/model/wind.hpp"
 
-#include <cmath>
 #include <cstddef>
 
 #include <Eigen/Geometry>
 
 namespace fabform {
+namespace {
 
-std::string Wind::invalid_reason() const {
-  if (!velocity_m_s.allFinite()) return "the wind's velocity must be finite";
-  if (velocity_m_s.squaredNorm() == 0.0) return "wind without a direction: its velocity is zero";
-  if (!(std::isfinite(coefficient_N_s_m3) && coefficient_N_s_m3 > 0.0))
-    return "the wind's coefficient must be a positive, finite number";
+constexpr double kFastestWind_m_s = 1000.0;
+
+}  // namespace
+
+std::string Wind::invalid_reason(std::string* field) const {
+  const auto bad = [&](const char* name, const char* why) {
+    if (field) *field = name;
+    return std::string(why);
+  };
+  if (!velocity_m_s.allFinite()) return bad("velocity_m_s", "must be finite");
+  if (velocity_m_s.squaredNorm() == 0.0) return bad("velocity_m_s", "wind without a direction: the velocity is zero");
+  if (!(velocity_m_s.norm() <= kFastestWind_m_s)) return bad("velocity_m_s", "must be at most 1000 m/s in speed");
+  if (!(coefficient_N_s_m3 > 0.0 && coefficient_N_s_m3 <= 1e6))
+    return bad("coefficient_N_s_m3",
+               "must be in (0, 1e6] N·s/m³ (force per area per m/s of wind across the fabric)");
   return "";
 }
 

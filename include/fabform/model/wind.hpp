@@ -19,8 +19,10 @@ struct Wind {
   Eigen::Vector3d velocity_m_s = Eigen::Vector3d::Zero();
   double coefficient_N_s_m3 = 0.0;  // C per area of fabric
 
-  /// "" when valid: a non-zero, finite velocity (a wind has a direction) and a positive C.
-  std::string invalid_reason() const;
+  /// Why the wind cannot be used, or "" when it can: it needs a direction (a non-zero velocity),
+  /// a speed of at most 1000 m/s (three times the speed of sound: beyond, a unit mistake) and
+  /// C in (0, 1e6]. `field` gets the offending member's name as a scene spells it.
+  std::string invalid_reason(std::string* field = nullptr) const;
 };
 
 /// The node's unit normal at positions x with the node at `at`: the sum of its faces' vector
