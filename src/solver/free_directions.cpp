@@ -22,13 +22,21 @@ int node_basis(AxisMask locks, const NodeContact& contact, Eigen::Matrix3d* basi
   return count;
 }
 
+int free_axes(AxisMask locks) {
+  int count = 0;
+  for (int axis = 0; axis < 3; ++axis) count += (locks & (1 << axis)) ? 0 : 1;
+  return count;
+}
+
 }  // namespace
 
 FreeDirections free_directions(const Model& model, const std::vector<NodeContact>& contact) {
   const auto n = static_cast<std::size_t>(model.node_count());
   FreeDirections d{std::vector<int>(n + 1, 0), std::vector<Eigen::Matrix3d>(n)};
-  for (std::size_t k = 0; k < n; ++k)
-    d.offset[k + 1] = d.offset[k] + node_basis(model.locks[k], contact[k], &d.basis[k]);
+  for (std::size_t k = 0; k < n; ++k) {
+    d.directions += node_basis(model.locks[k], contact[k], &d.basis[k]);
+    d.offset[k + 1] = d.offset[k] + free_axes(model.locks[k]);
+  }
   return d;
 }
 

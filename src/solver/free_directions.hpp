@@ -3,6 +3,11 @@
 // the body it presses on. Newton's unknowns are the node displacements along them, so locked
 // axes and contact normals are eliminated from the system rather than penalised: a held
 // coordinate cannot drift and a node on a body is not pushed into it.
+// The unknowns' layout depends on the locks alone: a node has a slot per free axis, and a slot a
+// contact normal takes away keeps a zero basis column (an empty row and column of Newton's
+// matrix, whose solution there is exactly zero). So the matrix's pattern stays the same while
+// nodes land on and leave bodies, and its fill-reducing ordering (METIS, a quarter of a Newton
+// iteration's time on a 400 × 400 dome) is computed once per solve instead of once per step.
 #include <vector>
 
 #include <Eigen/Core>
@@ -14,8 +19,10 @@ namespace fabform {
 
 struct FreeDirections {
   std::vector<int> offset;             // first unknown of each node; the last entry is the total
-  std::vector<Eigen::Matrix3d> basis;  // per node: orthonormal columns, count(k) of them used
+  std::vector<Eigen::Matrix3d> basis;  // per node: orthonormal columns, the rest zero
+  int directions = 0;                  // nonzero basis columns, over all nodes
 
+  /// The node's slots: one per free axis, whether or not a contact normal has taken it.
   int count(int k) const { return offset[k + 1] - offset[k]; }
   int unknowns() const { return offset.back(); }
   /// Unused columns are zero, so basis * (reduced step) needs no size checks.

@@ -81,9 +81,9 @@ class NewtonStep {
     const std::vector<Eigen::Vector3d> forces = node_forces(model_, state_.x);
     release_pulling_nodes(model_, forces, state_);
     const FreeDirections directions = free_directions(model_, state_.contact);
-    if (directions.unknowns() == 0) return false;
+    if (directions.directions == 0) return false;
     const auto step = solve(reduced_hessian(model_, state_.x, directions),
-                            reduced_forces(directions, forces));
+                            reduced_forces(directions, forces), directions.directions);
     if (!step) return false;
     const auto alpha = line_search(node_steps(directions, *step), forces, residual);
     if (!alpha) return false;
@@ -95,10 +95,11 @@ class NewtonStep {
   }
 
  private:
-  // Solves (H + μ·s·I) δ = f, s the mean diagonal of H; raises μ until δ is a descent direction.
+  // Solves (H + μ·s·I) δ = f, s the mean diagonal of H over the `used` slots (those with a
+  // direction); raises μ until δ is a descent direction.
   std::optional<Eigen::VectorXd> solve(const Eigen::SparseMatrix<double>& h,
-                                       const Eigen::VectorXd& f) {
-    const double mean = h.diagonal().mean();
+                                       const Eigen::VectorXd& f, int used) {
+    const double mean = h.diagonal().sum() / used;
     const double scale = mean > 0.0 ? mean : 1.0;
     for (; mu_ <= kMaxRegularization; mu_ *= 10.0) {
       Eigen::SparseMatrix<double> m = h;

@@ -22,8 +22,10 @@ inline double max_distance(const std::vector<Eigen::Vector3d>& a, const std::vec
 // poles sideways so the fabric meets regular facets. On a faceted body the rest is not unique:
 // a node pressed onto a ridge balances on either facet next to it, a fraction of a facet from
 // the ridge, and the two solvers may pick different sides (measured: 5e-5 m apart with 160
-// segments, 1e-5 m with 640; the energies agree to 1e-12). So their answers are compared
-// within a twentieth of a facet, and their energies tightly.
+// segments, 1e-5 m with 640). So their answers are compared within a twentieth of a facet,
+// and their energies within 1e-6 of each other: rests on different sides of ridges are
+// different local minima (measured: 1.6e-7 apart for newton's harsh and gentle starts, 1e-12
+// when the two pick the same sides; which they pick moves with the last bits of a step).
 constexpr double kSphereRadius = 0.03;
 constexpr int kSphereSegments = 320;
 constexpr double kFacet = 2.0 * 3.14159265358979 * kSphereRadius / kSphereSegments;
@@ -39,7 +41,7 @@ inline Model fabric_over_sphere(double lift) {
 inline void expect_same_rest(const Model& model, const SolverState& a, const SolverState& b) {
   EXPECT_LE(max_distance(a.x, b.x), kFacet / 20.0);
   const double energy = stretch_energy(model, a.x);
-  EXPECT_NEAR(stretch_energy(model, b.x), energy, 1e-9 * energy);
+  EXPECT_NEAR(stretch_energy(model, b.x), energy, 1e-6 * energy);
 }
 
 }  // namespace fabform::test
