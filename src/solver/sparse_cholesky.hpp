@@ -2,8 +2,8 @@
 // The Newton solver's sparse Cholesky: CHOLMOD's supernodal factorisation (through Eigen's
 // RAII wrapper, which owns CHOLMOD's workspace), whose dense kernels run on OpenBLAS threads.
 // It is several times faster than a simplicial factorisation on fabric grids, whose factors
-// fill in to dense fronts; the pattern, which only changes when the contact set does, is
-// analysed once per pattern.
+// fill in to dense fronts. The pattern is analysed (ordered) only when it differs from the last
+// one, which within a Newton solve it never does (free_directions.hpp).
 #include <memory>
 #include <optional>
 

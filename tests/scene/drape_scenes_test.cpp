@@ -47,8 +47,12 @@ Scene coarse_pin(double bending_N_m) {
 // Bend springs resist a kink only to second order in its angle, so even very stiff ones let the
 // circle droop a little round the pin: DC approaches 1 as the stiffness grows, 0.89 at 1e6 N/m
 // (seed 000's denim weighs 3.2 N/m²). 1e-3 N/m is limp: the circle hangs straight down.
+// So stiff a fabric converges slowly (newton: 480 iterations to 1e-5 N) and on this machine's
+// BLAS stalls at 1.1e-6 N, short of the scene's 1e-6 N; its DC is settled to 1e-6 by 1e-5 N.
 TEST(PinDrape, StiffInBendingStaysNearlyFlat) {
-  const Draped d = drape(coarse_pin(1e6));
+  Scene scene = coarse_pin(1e6);
+  scene.solver.newton.tolerance_N = 1e-5;
+  const Draped d = drape(scene);
   ASSERT_TRUE(d.summary.converged()) << d.summary.message;
   EXPECT_GT(d.figures.coefficient, 0.85);
   EXPECT_LE(d.figures.coefficient, 1.0);
