@@ -34,7 +34,7 @@ FreeDirections free_directions(const Model& model, const std::vector<NodeContact
   const auto n = static_cast<std::size_t>(model.node_count());
   FreeDirections d{std::vector<int>(n + 1, 0), std::vector<Eigen::Matrix3d>(n)};
   for (std::size_t k = 0; k < n; ++k) {
-    d.directions += node_basis(model.locks[k], contact[k], &d.basis[k]);
+    d.used += node_basis(model.locks[k], contact[k], &d.basis[k]);
     d.offset[k + 1] = d.offset[k] + free_axes(model.locks[k]);
   }
   return d;

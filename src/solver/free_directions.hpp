@@ -20,7 +20,7 @@ namespace fabform {
 struct FreeDirections {
   std::vector<int> offset;             // first unknown of each node; the last entry is the total
   std::vector<Eigen::Matrix3d> basis;  // per node: orthonormal columns, the rest zero
-  int directions = 0;                  // nonzero basis columns, over all nodes
+  int used = 0;                        // slots with a direction (a nonzero basis column)
 
   /// The node's slots: one per free axis, whether or not a contact normal has taken it.
   int count(int k) const { return offset[k + 1] - offset[k]; }

@@ -81,9 +81,9 @@ class NewtonStep {
     const std::vector<Eigen::Vector3d> forces = node_forces(model_, state_.x);
     release_pulling_nodes(model_, forces, state_);
     const FreeDirections directions = free_directions(model_, state_.contact);
-    if (directions.directions == 0) return false;
+    if (directions.used == 0) return false;
     const auto step = solve(reduced_hessian(model_, state_.x, directions),
-                            reduced_forces(directions, forces), directions.directions);
+                            reduced_forces(directions, forces), directions.used);
     if (!step) return false;
     const auto alpha = line_search(node_steps(directions, *step), forces, residual);
     if (!alpha) return false;

@@ -1,6 +1,7 @@
 #pragma once
 // The Newton solver's sparse Cholesky: CHOLMOD's supernodal factorisation (through Eigen's
-// RAII wrapper, which owns CHOLMOD's workspace), whose dense kernels run on OpenBLAS threads.
+// RAII wrapper, which owns CHOLMOD's workspace), whose dense kernels run on one OpenBLAS thread
+// (thread_count.hpp).
 // It is several times faster than a simplicial factorisation on fabric grids, whose factors
 // fill in to dense fronts. The pattern is analysed (ordered) only when it differs from the last
 // one, which within a Newton solve it never does (free_directions.hpp).

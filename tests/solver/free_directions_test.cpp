@@ -39,9 +39,9 @@ TEST(FreeDirections, LayoutDependsOnTheLocksAlone) {
   const FreeDirections apart = free_directions(t.model, t.free);
   const FreeDirections pressed = free_directions(t.model, t.touching);
   EXPECT_EQ(apart.offset, pressed.offset);
-  EXPECT_EQ(apart.directions, apart.unknowns());
+  EXPECT_EQ(apart.used, apart.unknowns());
   ASSERT_GT(t.touching_nodes, 0);
-  EXPECT_EQ(pressed.directions, apart.directions - t.touching_nodes);  // each loses its normal
+  EXPECT_EQ(pressed.used, apart.used - t.touching_nodes);  // each loses its normal
 }
 
 // A contact node's used columns are orthonormal and tangent; the slot it lost is a zero column.
