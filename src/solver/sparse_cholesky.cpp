@@ -1,35 +1,33 @@
 #include "solver/sparse_cholesky.hpp"
 
 #include <algorithm>
-#include <vector>
-
-#include <Eigen/CholmodSupport>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
+#include "solver/cholmod_factor.hpp"
+#include "solver/substructured_cholesky.hpp"
+
 namespace fabform {
 
 struct SparseCholesky::Impl {
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
-  std::vector<int> outer, inner;  // the pattern analysed, to know when to analyse again
+  LowerCsc matrix;  // the last matrix given; its pattern is the one analysed
   bool analysed = false;
-
-  // A matrix that is not positive definite is an expected outcome (the caller regularises
-  // and retries), not something for CHOLMOD to print.
-  Impl() { llt.cholmod().print = 0; }
+  std::unique_ptr<SubstructuredCholesky> split;  // when the pattern splits usefully
+  CholmodFactor whole;                           // otherwise
 
   bool same_pattern(const Eigen::SparseMatrix<double>& m) const {
-    return analysed && m.outerSize() + 1 == static_cast<Eigen::Index>(outer.size()) &&
-           std::equal(outer.begin(), outer.end(), m.outerIndexPtr()) &&
-           static_cast<Eigen::Index>(inner.size()) == m.nonZeros() &&
-           std::equal(inner.begin(), inner.end(), m.innerIndexPtr());
+    return analysed && m.rows() == matrix.n &&
+           std::equal(matrix.start.begin(), matrix.start.end(), m.outerIndexPtr()) &&
+           static_cast<Eigen::Index>(matrix.row.size()) == m.nonZeros() &&
+           std::equal(matrix.row.begin(), matrix.row.end(), m.innerIndexPtr());
   }
-  void remember_pattern(const Eigen::SparseMatrix<double>& m) {
-    outer.assign(m.outerIndexPtr(), m.outerIndexPtr() + m.outerSize() + 1);
-    inner.assign(m.innerIndexPtr(), m.innerIndexPtr() + m.nonZeros());
-    analysed = true;
+  void take(const Eigen::SparseMatrix<double>& m) {
+    matrix.n = static_cast<int>(m.rows());
+    matrix.start.assign(m.outerIndexPtr(), m.outerIndexPtr() + m.outerSize() + 1);
+    matrix.row.assign(m.innerIndexPtr(), m.innerIndexPtr() + m.nonZeros());
+    matrix.value.assign(m.valuePtr(), m.valuePtr() + m.nonZeros());
   }
 };
 
@@ -37,17 +35,17 @@ namespace {
 
 // CHOLMOD 3 runs small loops on a fixed team of 4 OpenMP threads (CHOLMOD_OMP_NUM_THREADS, fixed
 // when Debian built it) whatever the machine and the thread setting; on 2 cores their wake-ups
-// cost more than the loops (measured: 1e6 futex calls in a 10k-node dome). With no active
-// parallel level allowed, those loops run on the caller; the dense kernels keep OpenBLAS's own
-// threads, which follow the thread setting. Called from serial code only, as the setting is global.
+// cost more than the loops (measured: 1e6 futex calls in a 10k-node dome). Those loops stay on
+// their caller when no parallel level is left for them: none on one thread, one (the split's
+// two sides) on more. Called from serial code only, as the setting is global.
 template <class Work>
 void without_cholmod_team(Work&& work) {
 #ifdef _OPENMP
   struct Levels {
     const int saved = omp_get_max_active_levels();
-    Levels() { omp_set_max_active_levels(0); }
+    Levels() { omp_set_max_active_levels(omp_get_max_threads() > 1 ? 1 : 0); }
     ~Levels() { omp_set_max_active_levels(saved); }
-  } serial_only;
+  } allowed;
 #endif
   work();
 }
@@ -59,19 +57,27 @@ SparseCholesky::~SparseCholesky() = default;
 
 bool SparseCholesky::factorize(Eigen::SparseMatrix<double> lower) {
   lower.makeCompressed();  // the pattern comparison reads compressed storage
+  Impl& impl = *impl_;
+  const bool analyse = !impl.same_pattern(lower);
+  impl.take(lower);
+  bool definite = false;
   without_cholmod_team([&] {
-    if (!impl_->same_pattern(lower)) {
-      impl_->llt.analyzePattern(lower);
-      impl_->remember_pattern(lower);
+    if (analyse) {
+      impl.split = SubstructuredCholesky::split(impl.matrix);
+      if (!impl.split) impl.whole.analyse(impl.matrix);
+      impl.analysed = true;
     }
-    impl_->llt.factorize(lower);
+    definite = impl.split ? impl.split->factorize(impl.matrix) : impl.whole.factorize(impl.matrix);
   });
-  return impl_->llt.info() == Eigen::Success;
+  return definite;
 }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
-  Eigen::VectorXd x;
-  without_cholmod_team([&] { x = impl_->llt.solve(b); });
+  Eigen::VectorXd x = b;
+  without_cholmod_team([&] {
+    if (impl_->split) x = impl_->split->solve(b);
+    else impl_->whole.solve(&x);
+  });
   return x;
 }
 

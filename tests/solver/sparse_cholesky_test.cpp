@@ -1,0 +1,46 @@
+// Newton's sparse Cholesky: the same answer, bit for bit, on one thread and on two, whether it
+// splits the matrix or not; a new pattern is analysed anew.
+#include "solver/sparse_cholesky.hpp"
+
+#include <gtest/gtest.h>
+
+#include "fabform/thread_count.hpp"
+#include "support/grid_stiffness.hpp"
+
+namespace fabform {
+namespace {
+
+Eigen::VectorXd solved_on(int threads, const Eigen::SparseMatrix<double>& lower) {
+  use_threads(threads);
+  SparseCholesky cholesky;
+  EXPECT_TRUE(cholesky.factorize(lower));
+  Eigen::VectorXd b(lower.rows());
+  for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = 1.0 / (1.0 + static_cast<double>(i % 17));
+  return cholesky.solve(b);
+}
+
+TEST(SparseCholesky, ThreadCountDoesNotChangeABit) {
+  for (int side : {10, 40}) {  // below and above the split's minimum size
+    const Eigen::SparseMatrix<double> lower = test::grid_stiffness(side, 0.01);
+    const Eigen::VectorXd one = solved_on(1, lower), two = solved_on(2, lower);
+    use_threads(1);
+    EXPECT_TRUE(one == two) << side << " × " << side;
+    const Eigen::SparseMatrix<double> a = test::symmetric(lower);
+    Eigen::VectorXd b(lower.rows());
+    for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = 1.0 / (1.0 + static_cast<double>(i % 17));
+    EXPECT_LE((a * one - b).norm(), 1e-10 * b.norm());
+  }
+}
+
+TEST(SparseCholesky, AnalysesANewPattern) {
+  SparseCholesky cholesky;
+  for (int side : {40, 10, 41}) {
+    const Eigen::SparseMatrix<double> lower = test::grid_stiffness(side, 0.01);
+    ASSERT_TRUE(cholesky.factorize(lower));
+    const Eigen::VectorXd b = Eigen::VectorXd::Ones(lower.rows());
+    EXPECT_LE((test::symmetric(lower) * cholesky.solve(b) - b).norm(), 1e-10 * b.norm()) << side;
+  }
+}
+
+}  // namespace
+}  // namespace fabform
