@@ -12,6 +12,7 @@
 namespace fabform {
 
 struct SparseCholesky::Impl {
+  int min_split_unknowns = SubstructuredCholesky::kMinUnknowns;
   LowerCsc matrix;  // the last matrix given; its pattern is the one analysed
   bool analysed = false;
   std::unique_ptr<SubstructuredCholesky> split;  // when the pattern splits usefully
@@ -52,7 +53,10 @@ void without_cholmod_team(Work&& work) {
 
 }  // namespace
 
-SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
+SparseCholesky::SparseCholesky(int min_split_unknowns) : impl_(std::make_unique<Impl>()) {
+  impl_->min_split_unknowns = min_split_unknowns;
+}
+SparseCholesky::SparseCholesky() : SparseCholesky(SubstructuredCholesky::kMinUnknowns) {}
 SparseCholesky::~SparseCholesky() = default;
 
 bool SparseCholesky::factorize(Eigen::SparseMatrix<double> lower) {
@@ -63,7 +67,7 @@ bool SparseCholesky::factorize(Eigen::SparseMatrix<double> lower) {
   bool definite = false;
   without_cholmod_team([&] {
     if (analyse) {
-      impl.split = SubstructuredCholesky::split(impl.matrix);
+      impl.split = SubstructuredCholesky::split(impl.matrix, impl.min_split_unknowns);
       if (!impl.split) impl.whole.analyse(impl.matrix);
       impl.analysed = true;
     }
@@ -71,6 +75,8 @@ bool SparseCholesky::factorize(Eigen::SparseMatrix<double> lower) {
   });
   return definite;
 }
+
+bool SparseCholesky::split() const { return impl_->split != nullptr; }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
   Eigen::VectorXd x = b;

@@ -76,8 +76,9 @@ bool sides_touch(const LowerCsc& pattern, const std::vector<int>& part) {
 
 }  // namespace
 
-std::unique_ptr<SubstructuredCholesky> SubstructuredCholesky::split(const LowerCsc& pattern) {
-  if (pattern.n < kMinUnknowns) return nullptr;
+std::unique_ptr<SubstructuredCholesky> SubstructuredCholesky::split(const LowerCsc& pattern,
+                                                                    int min_unknowns) {
+  if (pattern.n < min_unknowns) return nullptr;
   const std::vector<int> part = vertex_bisection(pattern);
   int counts[3] = {0, 0, 0};
   for (int p : part) ++counts[p];

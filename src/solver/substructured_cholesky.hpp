@@ -17,9 +17,11 @@ namespace fabform {
 
 class SubstructuredCholesky {
  public:
-  /// The split of `pattern`, or null when it does not split usefully (too small, a side
-  /// empty, a separator too large for its dense complement).
-  static std::unique_ptr<SubstructuredCholesky> split(const LowerCsc& pattern);
+  /// The split of `pattern`, or null when it does not split usefully (fewer than
+  /// `min_unknowns`, a side or the separator empty, a separator too large for its dense
+  /// complement).
+  static std::unique_ptr<SubstructuredCholesky> split(const LowerCsc& pattern,
+                                                      int min_unknowns = kMinUnknowns);
 
   /// Factorises `m`, whose pattern is the one split; false when it is not positive definite.
   bool factorize(const LowerCsc& m);
@@ -29,10 +31,15 @@ class SubstructuredCholesky {
   /// The separator's unknowns, ascending.
   const std::vector<int>& separator() const { return separator_; }
 
-  /// Below this many unknowns a plain factorisation is cheaper than the split's overhead.
-  static constexpr int kMinUnknowns = 2000;
-  /// S's complement is dense: at most this many unknowns (72 MB a copy at the limit).
-  static constexpr int kMaxSeparator = 3000;
+  /// Below this many unknowns the whole matrix factorises about as fast on one thread as the
+  /// split does (dome, newton to 1e-6 N, one thread: N = 101, 31 000 unknowns, whole 1.03 s,
+  /// split 1.67 s; N = 201, 120 000, whole 9.7 s, split 12.0 s; N = 401, 480 000, whole 93.2 s,
+  /// split 90.9 s). On two threads the split takes 1.01 s, 6.0 s and 53.0 s; a threshold
+  /// that followed the thread count would make the bits follow it too.
+  static constexpr int kMinUnknowns = 300000;
+  /// S's complement is dense: at most this many unknowns (162 MB a copy at the limit; a
+  /// 1000 × 1000 grid's separator has about 3000).
+  static constexpr int kMaxSeparator = 4500;
 
  private:
   struct Side {

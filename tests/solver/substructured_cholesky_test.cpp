@@ -18,11 +18,13 @@ Eigen::VectorXd ramp(Eigen::Index n) {
   return b;
 }
 
-// 30 × 30 nodes: 2700 unknowns, above the split's minimum.
+// 30 × 30 nodes: 2700 unknowns, split with a lower minimum than Newton's 300 000.
 constexpr int kSide = 30;
+constexpr int kMinimum = 2000;
 
 TEST(SubstructuredCholesky, SmallMatricesAreNotSplit) {
-  EXPECT_EQ(SubstructuredCholesky::split(test::to_lower_csc(test::grid_stiffness(20, 0.05))), nullptr);
+  EXPECT_EQ(SubstructuredCholesky::split(test::to_lower_csc(test::grid_stiffness(20, 0.05)), kMinimum), nullptr);
+  EXPECT_EQ(SubstructuredCholesky::split(test::to_lower_csc(test::grid_stiffness(kSide, 0.05))), nullptr);
 }
 
 // A graph without edges: whatever METIS puts in the separator, each piece is solved alone.
@@ -31,7 +33,7 @@ TEST(SubstructuredCholesky, DiagonalMatrixSolvesExactly) {
   diagonal.setIdentity();
   diagonal *= 4.0;
   const LowerCsc m = test::to_lower_csc(diagonal);
-  const auto split = SubstructuredCholesky::split(m);
+  const auto split = SubstructuredCholesky::split(m, kMinimum);
   if (!split) GTEST_SKIP() << "METIS left no separator, so the matrix is factorised whole";
   ASSERT_TRUE(split->factorize(m));
   EXPECT_TRUE(split->solve(ramp(m.n)) == ramp(m.n) / 4.0);  // quarters are exact
@@ -40,7 +42,7 @@ TEST(SubstructuredCholesky, DiagonalMatrixSolvesExactly) {
 TEST(SubstructuredCholesky, SolvesAsTheWholeFactorisationDoes) {
   for (double shift : {1.0, 1e-3, 1e-6}) {
     const LowerCsc m = test::to_lower_csc(test::grid_stiffness(kSide, shift));
-    const auto split = SubstructuredCholesky::split(m);
+    const auto split = SubstructuredCholesky::split(m, kMinimum);
     ASSERT_NE(split, nullptr);
     EXPECT_GT(static_cast<int>(split->separator().size()), 0);
     EXPECT_LE(static_cast<int>(split->separator().size()), 2 * kSide * 3);
@@ -60,7 +62,7 @@ TEST(SubstructuredCholesky, SolvesAsTheWholeFactorisationDoes) {
 TEST(SubstructuredCholesky, RefactorisesNewValuesOnTheSamePattern) {
   const LowerCsc first = test::to_lower_csc(test::grid_stiffness(kSide, 0.1, 1));
   const LowerCsc second = test::to_lower_csc(test::grid_stiffness(kSide, 0.1, 2));
-  const auto split = SubstructuredCholesky::split(first);
+  const auto split = SubstructuredCholesky::split(first, kMinimum);
   ASSERT_NE(split, nullptr);
   ASSERT_TRUE(split->factorize(first));
   ASSERT_TRUE(split->factorize(second));
@@ -73,7 +75,7 @@ TEST(SubstructuredCholesky, RefactorisesNewValuesOnTheSamePattern) {
 // in the separator, makes it fail.
 TEST(SubstructuredCholesky, ReportsAMatrixThatIsNotPositiveDefinite) {
   const Eigen::SparseMatrix<double> good = test::grid_stiffness(kSide, 0.05);
-  const auto split = SubstructuredCholesky::split(test::to_lower_csc(good));
+  const auto split = SubstructuredCholesky::split(test::to_lower_csc(good), kMinimum);
   ASSERT_NE(split, nullptr);
   for (int u : {0, 3 * kSide * kSide - 1, split->separator().front(), split->separator().back()}) {
     Eigen::SparseMatrix<double> bad = good;
