@@ -107,8 +107,8 @@ std::unique_ptr<SubstructuredCholesky> SubstructuredCholesky::split(const LowerC
     for (int k = 0; k < interior; ++k) local[static_cast<std::size_t>(side.interior[static_cast<std::size_t>(k)])] = k;
     for (std::size_t j = 0; j < split->separator_.size(); ++j)
       local[static_cast<std::size_t>(split->separator_[j])] = interior + static_cast<int>(j);
-    // In turn, not on a thread each: METIS's random choices come from one global stream, so
-    // two orderings at once would depend on the threads' timing (measured: N = 1000 dome).
+    // In turn, not on a thread each: ordering both at once changed the bits of an N = 1000
+    // dome from run to run (METIS's random choices are not private to a call).
     if (!split->build_side(pattern, local, &side)) return nullptr;
   }
   return split;
