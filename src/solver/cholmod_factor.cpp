@@ -67,6 +67,14 @@ struct CholmodFactor::Impl {
     cholmod_free_factor(&factor, &common);
     cholmod_finish(&common);
   }
+  // x ← the solution of CHOLMOD's `system` with right-hand side x.
+  void solve(int system, Eigen::VectorXd* x) {
+    cholmod_dense b = view_of(x);
+    cholmod_dense* solved = cholmod_solve(system, factor, &b, &common);
+    check("solve");
+    x->noalias() = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solved->x), x->size());
+    cholmod_free_dense(&solved, &common);
+  }
   void check(const char* what) const {
     if (common.status < CHOLMOD_OK)
       throw std::runtime_error(std::string("CHOLMOD ") + what + " failed (status " +
@@ -114,22 +122,11 @@ std::vector<int> CholmodFactor::order() const {
   return std::vector<int>(perm, perm + impl_->factor->n);
 }
 
-void CholmodFactor::solve(Eigen::VectorXd* x) const {
-  cholmod_dense b = view_of(x);
-  cholmod_dense* solved = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
-  impl_->check("solve");
-  x->noalias() = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solved->x), x->size());
-  cholmod_free_dense(&solved, &impl_->common);
-}
+void CholmodFactor::solve(Eigen::VectorXd* x) const { impl_->solve(CHOLMOD_A, x); }
 
 void CholmodFactor::apply(Step step, Eigen::VectorXd* x) const {
   static constexpr int kSystem[] = {CHOLMOD_P, CHOLMOD_L, CHOLMOD_Lt, CHOLMOD_Pt};
-  cholmod_dense b = view_of(x);
-  cholmod_dense* solved =
-      cholmod_solve(kSystem[static_cast<int>(step)], impl_->factor, &b, &impl_->common);
-  impl_->check("solve");
-  x->noalias() = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solved->x), x->size());
-  cholmod_free_dense(&solved, &impl_->common);
+  impl_->solve(kSystem[static_cast<int>(step)], x);
 }
 
 // A supernode s holds columns super[s] .. super[s+1]−1, dense, column-major, one row per index
