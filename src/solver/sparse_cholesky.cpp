@@ -24,10 +24,13 @@ struct SparseCholesky::Impl {
            static_cast<Eigen::Index>(matrix.row.size()) == m.nonZeros() &&
            std::equal(matrix.row.begin(), matrix.row.end(), m.innerIndexPtr());
   }
-  void take(const Eigen::SparseMatrix<double>& m) {
-    matrix.n = static_cast<int>(m.rows());
-    matrix.start.assign(m.outerIndexPtr(), m.outerIndexPtr() + m.outerSize() + 1);
-    matrix.row.assign(m.innerIndexPtr(), m.innerIndexPtr() + m.nonZeros());
+  // The values, and the pattern only when it is new (within a solve it never is).
+  void take(const Eigen::SparseMatrix<double>& m, bool new_pattern) {
+    if (new_pattern) {
+      matrix.n = static_cast<int>(m.rows());
+      matrix.start.assign(m.outerIndexPtr(), m.outerIndexPtr() + m.outerSize() + 1);
+      matrix.row.assign(m.innerIndexPtr(), m.innerIndexPtr() + m.nonZeros());
+    }
     matrix.value.assign(m.valuePtr(), m.valuePtr() + m.nonZeros());
   }
 };
@@ -63,7 +66,7 @@ bool SparseCholesky::factorize(Eigen::SparseMatrix<double> lower) {
   lower.makeCompressed();  // the pattern comparison reads compressed storage
   Impl& impl = *impl_;
   const bool analyse = !impl.same_pattern(lower);
-  impl.take(lower);
+  impl.take(lower, analyse);
   bool definite = false;
   without_cholmod_team([&] {
     if (analyse) {

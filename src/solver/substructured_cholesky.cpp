@@ -115,7 +115,7 @@ std::unique_ptr<SubstructuredCholesky> SubstructuredCholesky::split(const LowerC
 }
 
 // Orders the side's interior by nested dissection (CHOLMOD's automatic choice picks AMD for a
-// half grid, whose factorisation then costs 1.2× more: N = 401 dome), with S after it. The postordering keeps S
+// half grid, whose factorisation then cost 1.2–1.4× more on an N = 401 dome), with S after it. The postordering keeps S
 // last when its complement couples it into one chain at the elimination tree's root; that is
 // checked, as a side whose interior falls apart from S could let a piece follow S.
 bool SubstructuredCholesky::build_side(const LowerCsc& pattern, const std::vector<int>& local,
