@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/external_loads.hpp"
 #include "support/clamped_fabric.hpp"
+#include "support/rotated_fabric.hpp"
 #include "support/shapes.hpp"
 
 namespace fabform {
@@ -67,6 +69,23 @@ TEST(Relax, LiftedFabricRelaxesToFlatWithoutBody) {
   // The out-of-plane stiffness of a node is about 4 T w / l = 4 · 25 N/m · 1 cm / 1 cm = 100 N/m,
   // so a residual of 1e-8 N leaves heights within ~1e-10 m; 1e-8 m is a safe bound.
   for (const auto& x : state.x) EXPECT_NEAR(x.z(), 0.0, 1e-8);
+}
+
+// A fabric laid out at rest, held at its corners, starts to fall under its weight in the first
+// sweep. Its lengths differ from the rest lengths by rounding (~1e-17 m); a step Σ|d|/C taken
+// from that would move no node for ever.
+TEST(Relax, FabricLaidOutAtRestFallsUnderItsWeight) {
+  Model model = test::rotated_fabric_at_rest(8);
+  model.loads = gravity_loads(model.fabric, 0.2, kStandardGravity_m_s2);
+  SolverState state = SolverState::at_start(model);
+  RelaxOptions options;
+  options.tolerance_N = 1e-8;  // below a node's weight, ~3e-4 N
+  options.max_iterations = 1;
+  const Summary summary = relax(model, state, options);
+  ASSERT_EQ(summary.iterations, 1);
+  const int centre = 40;
+  const double spacing = 0.1 / 8;
+  EXPECT_LT(state.x[centre].z(), model.start[centre].z() - 1e-3 * spacing);
 }
 
 // A pre-stretched square membrane over a sphere rises onto it: nodes touch, none enters it,
