@@ -21,7 +21,7 @@ inline Eigen::Vector3d node_force(const Model& model, const std::vector<Eigen::V
   return node_force_at(model, x, node, x[static_cast<std::size_t>(node)]);
 }
 
-/// Σ |l − L| over the springs at a node (m).
+/// Σ |l − L| over the springs at a node (m); a term no larger than the rounding of l counts as 0.
 double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x, int node);
 
 /// Total stretch energy of the fabric (J).
