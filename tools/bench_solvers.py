@@ -57,6 +57,9 @@ FAST = "newton"                       # the reference solver and the one the tar
 # Every shipped scene but the dome, whose cases are built from its sizes and starts.
 SHIPPED = tuple(sorted(p.stem for p in (ROOT / "scenes").glob("*.toml") if p.stem != "dome"))
 DOME_HEIGHT_M = 0.04                  # DESIGN.md: both dome starts are 4 cm high
+# "Relax run to a tight tolerance", judged at the e for its targets. At a looser e both
+# solvers can stop where they started: a drape's start, a flat fabric under its weight, meets 1e-2 N.
+AGREEMENT_TOL_N = 1e-6
 MAX_ITERATIONS = 1_000_000_000        # fabform's largest cap: the budget stops a run, not the scene's cap
 RETRIES = 3                           # launching fabform while it is being relinked fails
 COLUMNS = ["case", "scene", "N", "start", "spacing_m", "nodes", "solver", "tolerance_N", "threads", "status",
@@ -613,11 +616,12 @@ def target_harsh(rows, solvers) -> list:
 def target_agreement(rows) -> list:
     lines = []
     for scene in SHIPPED:
-        name = f"{scene}: newton within 1e-3 of the spacing of relax"
+        name = f"{scene}: newton within 1e-3 of the spacing of relax at e <= {AGREEMENT_TOL_N:g} N"
         both = [r for r in rows if r["case"] == scene and r["solver"] == "relax" and r["status"] == "converged"
+                and r["tolerance_N"] <= AGREEMENT_TOL_N
                 and isinstance(r.get("distance_to_newton_m"), float) and not math.isnan(r["distance_to_newton_m"])]
         if not both:
-            lines.append(f"- {name}: **not measured**")
+            lines.append(f"- {name}: **not measured** (no relax run converged that tightly, beside newton's)")
             continue
         tight = min(both, key=lambda r: (r["tolerance_N"], r["threads"]))
         fraction = tight["distance_to_newton_m"] / tight["spacing_m"]
