@@ -72,7 +72,8 @@ struct CholmodFactor::Impl {
     cholmod_dense b = view_of(x);
     cholmod_dense* solved = cholmod_solve(system, factor, &b, &common);
     check("solve");
-    x->noalias() = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solved->x), x->size());
+    x->noalias() =
+        Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(solved->x), x->size());
     cholmod_free_dense(&solved, &common);
   }
   void check(const char* what) const {

@@ -31,11 +31,11 @@ class SubstructuredCholesky {
   /// The separator's unknowns, ascending.
   const std::vector<int>& separator() const { return separator_; }
 
-  /// Below this many unknowns the whole matrix factorises about as fast on one thread as the
-  /// split does (dome, newton to 1e-6 N, measured with this threshold lowered, one thread: N = 101, 31 000 unknowns, whole 1.03 s,
-  /// split 1.67 s; N = 201, 120 000, whole 9.7 s, split 12.0 s; N = 401, 480 000, whole 93.2 s,
-  /// split 90.9 s). On two threads the split takes 1.01 s, 6.0 s and 53.0 s; a threshold
-  /// that followed the thread count would make the bits follow it too.
+  /// Below this many unknowns the whole matrix factorises about as fast on one thread as the split
+  /// does (dome, newton to 1e-6 N, measured with this threshold lowered, one thread: N = 101,
+  /// 31 000 unknowns, whole 1.03 s, split 1.67 s; N = 201, 120 000, whole 9.7 s, split 12.0 s;
+  /// N = 401, 480 000, whole 93.2 s, split 90.9 s). On two threads the split takes 1.01 s,
+  /// 6.0 s and 53.0 s; a threshold that followed the thread count would make the bits follow it.
   static constexpr int kMinUnknowns = 300000;
   /// S's complement is dense: at most this many unknowns (162 MB a copy at the limit; a
   /// 1000 × 1000 grid's separator has about 3000).

@@ -1,7 +1,6 @@
 #pragma once
 // A fabric laid out at rest, turned about z and moved off the origin, so that its springs'
 // lengths, computed from the coordinates, differ from their rest lengths by rounding alone.
-#include <cmath>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -17,11 +16,10 @@ inline Model rotated_fabric_at_rest(int divisions) {
   const Eigen::Vector3d offset(0.123456789, -0.0654321, 0.002);
   std::vector<AxisMask> locks(static_cast<std::size_t>(grid.node_count()), 0);
   std::vector<Eigen::Vector3d> x(static_cast<std::size_t>(grid.node_count()));
-  const int last = divisions;
   for (int k = 0; k < grid.node_count(); ++k) {
     x[static_cast<std::size_t>(k)] = offset + turn * grid.rest_position(k);
-    const bool corner = (grid.i_of(k) == 0 || grid.i_of(k) == last) &&
-                        (grid.j_of(k) == 0 || grid.j_of(k) == last);
+    const bool corner = (grid.i_of(k) == 0 || grid.i_of(k) == divisions) &&
+                        (grid.j_of(k) == 0 || grid.j_of(k) == divisions);
     if (corner) locks[static_cast<std::size_t>(k)] = kLockX | kLockY | kLockZ;
   }
   return Model{grid, linear_table(500.0), linear_table(500.0), locks, {}, x};
