@@ -180,6 +180,8 @@ def summary_rows(result: dict) -> list:
     for direction in ("warp", "weft"):
         if f"max_{direction}_strain" in f:
             rows.append((f"largest {direction} strain", peak_text(f[f"max_{direction}_strain"])))
+        if f"min_{direction}_strain" in f:
+            rows.append((f"smallest {direction} strain", peak_text(f[f"min_{direction}_strain"])))
     return rows
 
 

@@ -9,7 +9,6 @@
 #include "fabform/error.hpp"
 #include "fabform/geometry/mesh_report.hpp"
 #include "fabform/model/equilibrium.hpp"
-#include "fabform/model/external_loads.hpp"
 #include "fabform/model/table_range.hpp"
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/output/progress.hpp"
@@ -170,8 +169,8 @@ int run(const RunArguments& args) {
                scene.solver.name.c_str(), scene.solver.tolerance_N(),
                start.recorded ? (", resumed after iteration " + std::to_string(so_far.iterations)).c_str() : "");
   std::vector<std::string> of_model = body_warnings(model);  // found once: they do not change
-  if (std::string w = load_tolerance_warning(model.loads, scene.solver.tolerance_N()); !w.empty())
-    of_model.push_back(std::move(w));
+  for (const auto& term : model.terms)
+    if (std::string w = term->tolerance_warning(scene.solver.tolerance_N()); !w.empty()) of_model.push_back(std::move(w));
   const auto publish = [&](const SolverState& s, const Summary& summary) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

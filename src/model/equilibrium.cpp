@@ -4,7 +4,7 @@
 #include <limits>
 #include <optional>
 
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/spring_strains.hpp"
 
 namespace fabform {
 

@@ -1,7 +1,11 @@
 #include "fabform/model/hinge_bending.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdio>
+
+#include "fabform/model/model.hpp"
 
 namespace fabform {
 
@@ -37,34 +41,65 @@ HingeStencil hinge_stencil(const Hinge& hinge) {
   return out;
 }
 
-double bending_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
-  if (!model.bending_rigidity_Nm) return 0.0;
+std::string HingeBending::describe(const Model& model) const {
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "bending: hinges across %zu face sides (quadratic bending of a flat fabric), flexural rigidity %.6g N·m",
+                model.fabric.hinges().size(), rigidity_Nm_);
+  return text;
+}
+
+double HingeBending::energy(const Model& model, const Positions& x) const {
   double energy = 0.0;
-  for (const Hinge& h : model.fabric.hinges()) energy += hinge_energy(h, *model.bending_rigidity_Nm, x);
+  for (const Hinge& h : model.fabric.hinges()) energy += hinge_energy(h, rigidity_Nm_, x);
   return energy;
 }
 
-Eigen::Vector3d bending_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
-                                 const Eigen::Vector3d& at) {
+Eigen::Vector3d HingeBending::force_at(const Model& model, const Positions& x, int node,
+                                       const Eigen::Vector3d& at) const {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  if (!model.bending_rigidity_Nm) return force;
   for (const int i : model.fabric.hinges_at(node)) {
     const Hinge& h = model.fabric.hinges()[static_cast<std::size_t>(i)];
     const HingeStencil stencil = hinge_stencil(h);
     const auto k = static_cast<std::size_t>(
         std::find(stencil.node.begin(), stencil.node.begin() + stencil.count, node) - stencil.node.begin());
-    force -= 2.0 * *model.bending_rigidity_Nm * h.shape_factor * stencil.weight[k] * bend_vector(h, x, node, at);
+    force -= 2.0 * rigidity_Nm_ * h.shape_factor * stencil.weight[k] * bend_vector(h, x, node, at);
   }
   return force;
 }
 
-double node_bending_energy(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
-                           const Eigen::Vector3d& at) {
-  if (!model.bending_rigidity_Nm) return 0.0;
+double HingeBending::node_energy(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const {
   double energy = 0.0;
   for (const int i : model.fabric.hinges_at(node))
-    energy += hinge_energy(model.fabric.hinges()[static_cast<std::size_t>(i)], *model.bending_rigidity_Nm, x, node, at);
+    energy += hinge_energy(model.fabric.hinges()[static_cast<std::size_t>(i)], rigidity_Nm_, x, node, at);
   return energy;
+}
+
+double HingeBending::node_energy_change(const Model& model, const Positions& x, int node,
+                                        const Eigen::Vector3d& at) const {
+  return node_energy(model, x, node, at) - node_energy(model, x, node, x[static_cast<std::size_t>(node)]);
+}
+
+void HingeBending::add_stiffness(const Model& model, const Positions& /*x*/, StiffnessSink& sink) const {
+  for (const Hinge& h : model.fabric.hinges()) {
+    const HingeStencil stencil = hinge_stencil(h);
+    const double scale = 2.0 * rigidity_Nm_ * h.shape_factor;
+    for (std::size_t r = 0; r < static_cast<std::size_t>(stencil.count); ++r)
+      for (std::size_t c = 0; c <= r; ++c)
+        sink.add(stencil.node[r], stencil.node[c],
+                 scale * stencil.weight[r] * stencil.weight[c] * Eigen::Matrix3d::Identity());
+  }
+}
+
+void HingeBending::bound_stiffness(const Model& model, StiffnessBound& bound) const {
+  for (const Hinge& h : model.fabric.hinges()) {
+    const HingeStencil stencil = hinge_stencil(h);
+    double sum = 0.0;
+    for (int k = 0; k < stencil.count; ++k) sum += std::abs(stencil.weight[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < stencil.count; ++k)
+      bound.per_node[static_cast<std::size_t>(stencil.node[static_cast<std::size_t>(k)])] +=
+          rigidity_Nm_ * h.shape_factor * std::abs(stencil.weight[static_cast<std::size_t>(k)]) * sum;
+  }
 }
 
 }  // namespace fabform

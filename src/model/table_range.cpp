@@ -71,7 +71,7 @@ std::vector<std::string> table_range_warnings(const Model& model,
   for (std::size_t k = 0; k < kKinds; ++k)
     if (count[k].collapsed > 0)
       warnings.push_back(describe_collapse(to_string(SpringKind(k)), count[k], total[k],
-                                                   model.bend || model.bending_rigidity_Nm));
+                                                   model.resists_bending()));
   return warnings;
 }
 

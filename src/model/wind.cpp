@@ -1,8 +1,13 @@
 #include "fabform/model/wind.hpp"
 
 #include <cstddef>
+#include <cstdio>
+#include <stdexcept>
 
 #include <Eigen/Geometry>
+
+#include "fabform/model/model.hpp"
+#include "fabform/thread_count.hpp"
 
 namespace fabform {
 namespace {
@@ -56,6 +61,58 @@ Eigen::Vector3d wind_force(const Wind& wind, double node_area_m2, const Eigen::V
 
 Eigen::Vector3d after_wind_drag(double drag_step, const Eigen::Vector3d& normal, const Eigen::Vector3d& velocity_m_s) {
   return velocity_m_s - drag_step / (1.0 + drag_step * normal.squaredNorm()) * normal.dot(velocity_m_s) * normal;
+}
+
+WindLoad::WindLoad(const Wind& wind) : wind_(wind) {
+  if (const std::string why = wind.invalid_reason(); !why.empty()) throw std::invalid_argument("wind: " + why);
+}
+
+std::string WindLoad::describe(const Model& /*model*/) const {
+  const Eigen::Vector3d& v = wind_.velocity_m_s;
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "wind: seed 004's C·A·[n·(v_wind − v)]·n on each node, v_wind = (%.6g, %.6g, %.6g) m/s, "
+                "C = %.6g N·s/m³ per area",
+                v.x(), v.y(), v.z(), wind_.coefficient_N_s_m3);
+  return text;
+}
+
+Eigen::Vector3d WindLoad::force_at(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const {
+  return wind_force(wind_, model.fabric.node_areas()[static_cast<std::size_t>(node)],
+                    node_normal(model.fabric, x, node, at), Eigen::Vector3d::Zero());
+}
+
+namespace {
+
+class WindDrag final : public StepDrag {
+ public:
+  WindDrag(const Wind& wind, const Fabric& fabric, const Positions& x)
+      : coefficient_(wind.coefficient_N_s_m3), areas_(fabric.node_areas()), normals_(x.size()) {
+#pragma omp parallel for schedule(static) if (fabric.node_count() >= kMinParallelItems)
+    for (int k = 0; k < fabric.node_count(); ++k) normals_[static_cast<std::size_t>(k)] = node_normal(fabric, x, k);
+  }
+
+  Eigen::Vector3d after(int node, double seconds, double mass_kg, const Eigen::Vector3d& velocity,
+                        const NodeFreedom& freedom) const override {
+    const auto k = static_cast<std::size_t>(node);
+    return after_wind_drag(seconds * coefficient_ * areas_[k] / mass_kg, freedom.project(normals_[k]), velocity);
+  }
+
+ private:
+  double coefficient_;
+  const std::vector<double>& areas_;
+  Positions normals_;
+};
+
+}  // namespace
+
+std::unique_ptr<StepDrag> WindLoad::drag(const Model& model, const Positions& x) const {
+  return std::make_unique<WindDrag>(wind_, model.fabric, x);
+}
+
+std::string WindLoad::refusal(const std::string& solver) const {
+  if (solver == "dynamic") return "";
+  return "wind depends on the fabric's velocity (seed 004): only solver dynamic models it, not " + solver;
 }
 
 }  // namespace fabform

@@ -49,13 +49,14 @@ std::vector<Cell> formed_cells(const Fabric& fabric, const std::vector<Eigen::Ve
   return cells;
 }
 
-StrainPeak peak_of(const Model& model, const std::vector<Eigen::Vector3d>& x, SpringKind kind) {
+// The most stretched (sign +1) or most compressed (sign −1) spring of a kind.
+StrainPeak peak_of(const Model& model, const std::vector<Eigen::Vector3d>& x, SpringKind kind, double sign) {
   StrainPeak peak;
-  peak.strain = -std::numeric_limits<double>::infinity();
+  peak.strain = -sign * std::numeric_limits<double>::infinity();
   for (const Spring& s : model.fabric.springs()) {
     if (s.kind != kind) continue;
     const double strain = spring_strain(x[s.a], x[s.b], s.rest_length);
-    if (strain > peak.strain)
+    if (sign * strain > sign * peak.strain)
       peak = {strain, model.fabric.i_of(s.a), model.fabric.j_of(s.a), 0.5 * (x[s.a] + x[s.b])};
   }
   return peak;
@@ -123,8 +124,10 @@ FabricFigures fabric_figures(const Model& model, const std::vector<Eigen::Vector
   f.area_flat_m2 = model.fabric.flat_area();
   for (const Cell& c : cells) f.area_formed_m2 += c.area_m2;
   f.contact_area_m2 = contact_area(model.fabric, cells, contact);
-  f.max_warp = peak_of(model, x, SpringKind::warp);
-  f.max_weft = peak_of(model, x, SpringKind::weft);
+  f.max_warp = peak_of(model, x, SpringKind::warp, 1.0);
+  f.max_weft = peak_of(model, x, SpringKind::weft, 1.0);
+  f.min_warp = peak_of(model, x, SpringKind::warp, -1.0);
+  f.min_weft = peak_of(model, x, SpringKind::weft, -1.0);
   f.histogram = histogram_of(cells);
   return f;
 }

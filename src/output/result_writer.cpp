@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fabform/analysis/drape_figures.hpp"
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/spring_strains.hpp"
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/output/fabric_figures.hpp"
 #include "fabform/io/obj_text.hpp"
@@ -40,6 +40,8 @@ nlohmann::json figures_json(const FabricFigures& f) {
           {"contact_area_m2", number(f.contact_area_m2)},
           {"max_warp_strain", peak_json(f.max_warp)},
           {"max_weft_strain", peak_json(f.max_weft)},
+          {"min_warp_strain", peak_json(f.min_warp)},
+          {"min_weft_strain", peak_json(f.min_weft)},
           {"strain_histogram", histogram}};
 }
 
@@ -112,7 +114,7 @@ std::string result_json(const RunRecord& run) {
     j["drape"] = drape_json(run);
     j["drape_coefficient"] = j["drape"].is_null() ? nlohmann::json(nullptr) : j["drape"]["coefficient"];
   }
-  j["modelled"] = run.model.modelled;
+  j["modelled"] = run.model.modelled();
   j["materials"] = {{"warp", run.scene.warp_path}, {"weft", run.scene.weft_path}};
   if (run.scene.shear.on) j["materials"]["shear"] = run.scene.shear.material_path;
   nlohmann::json bodies = nlohmann::json::array();

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 #include "fabform/io/mesh_reader.hpp"
 #include "fabform/material/material_csv.hpp"
+#include "fabform/model/gravity.hpp"
+#include "fabform/model/hinge_bending.hpp"
+#include "fabform/model/wind.hpp"
 
 namespace fabform {
 namespace {
@@ -61,21 +65,12 @@ void require_support(const Scene& scene, const Model& model) {
                    "gravity with nothing to hold the fabric up: no node is held in z and the scene has no body");
 }
 
-std::string gravity_term(double density_kg_m2, double acceleration_m_s2) {
-  char text[160];
-  std::snprintf(text, sizeof text,
-                "gravity: %.6g m/s² along -z on an areal density of %.6g kg/m² (material files)",
-                acceleration_m_s2, density_kg_m2);
-  return text;
-}
-
 void add_gravity(const Scene& scene, const MaterialFile& warp, const MaterialFile& weft, Model* model) {
   if (!scene.gravity.on) return;
   require_support(scene, *model);
   const double density = areal_density(scene, warp, weft);
-  model->loads = gravity_loads(model->fabric, density, scene.gravity.acceleration_m_s2);
+  model->terms.push_back(std::make_shared<Gravity>(model->fabric, density, scene.gravity.acceleration_m_s2));
   model->areal_density_kg_m2 = density;
-  model->modelled.push_back(gravity_term(density, scene.gravity.acceleration_m_s2));
 }
 
 RigidBody build_body(const BodySpec& spec) {
@@ -163,44 +158,29 @@ void check_clear_start(const Scene& scene, const Model& model) {
   }
 }
 
-// Seed 004's shear springs follow the fabric's bias response, read like a warp or weft table.
+// Seed 004's shear springs follow the fabric's bias response, read like a warp or weft table;
+// the fabric has them, so the model has their term.
 void add_shear(const Scene& scene, Model* model) {
   if (!scene.shear.on) return;
   model->shear = read_material(scene.shear.material_path, scene.shear.material_where).table;
-  model->modelled.push_back("shear: diagonal springs (rest length the cell's diagonal) following " +
-                            scene.shear.material_path);
 }
 
-// Bending: hinges with the fabric's flexural rigidity, or seed 004's bend springs, which resist
-// the shortening a fold brings as much as stretching: a table linear through zero in both
-// directions, T = k·ε per width.
+// Bending: hinges with the fabric's flexural rigidity, or seed 004's bend springs (the fabric
+// has them, so the model has their term), which resist the shortening a fold brings as much as
+// stretching: a table linear through zero in both directions, T = k·ε per width.
 void add_bending(const Scene& scene, Model* model) {
   if (!scene.bending.on) return;
-  char text[200];
   if (scene.bending.rigidity_Nm > 0.0) {
-    model->bending_rigidity_Nm = scene.bending.rigidity_Nm;
-    std::snprintf(text, sizeof text,
-                  "bending: hinges across %zu face sides (quadratic bending of a flat fabric), flexural rigidity %.6g N·m",
-                  model->fabric.hinges().size(), scene.bending.rigidity_Nm);
+    model->terms.push_back(std::make_shared<HingeBending>(scene.bending.rigidity_Nm));
   } else {
     const double k = scene.bending.stiffness_N_m;
     model->bend = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "bending");
-    std::snprintf(text, sizeof text,
-                  "bending: skip-one bend springs, linear in tension and compression, %.6g N/m per width", k);
   }
-  model->modelled.push_back(text);
 }
 
 void add_wind(const Scene& scene, Model* model) {
   if (!scene.wind.on) return;
-  model->wind = Wind{scene.wind.velocity_m_s, scene.wind.coefficient_N_s_m3};
-  const Eigen::Vector3d& v = scene.wind.velocity_m_s;
-  char text[240];
-  std::snprintf(text, sizeof text,
-                "wind: seed 004's C·A·[n·(v_wind − v)]·n on each node, v_wind = (%.6g, %.6g, %.6g) m/s, "
-                "C = %.6g N·s/m³ per area",
-                v.x(), v.y(), v.z(), scene.wind.coefficient_N_s_m3);
-  model->modelled.push_back(text);
+  model->terms.push_back(std::make_shared<WindLoad>(Wind{scene.wind.velocity_m_s, scene.wind.coefficient_N_s_m3}));
 }
 
 // A drape test's support must lie under the specimen: every point of the named body, seen from
@@ -225,28 +205,14 @@ void check_drape_support(const Scene& scene, const Model& model) {
   }
 }
 
-std::string stretch_term(const Fabric& fabric) {
-  const std::string outline = fabric.spec().shape == FabricSpec::Shape::rectangle
-                                  ? "rectangle"
-                                  : "circle meshed " + std::string(to_string(fabric.spec().mesh));
-  return "stretch: warp and weft springs of a " + outline + " of " + std::to_string(fabric.node_count()) +
-         " nodes, tension-only piecewise-linear tables";
-}
-
 }  // namespace
 
 Model build_model(const Scene& scene) {
   Fabric fabric = build_fabric(scene);
   const MaterialFile warp = read_material(scene.warp_path, scene.warp_where);
   const MaterialFile weft = read_material(scene.weft_path, scene.weft_where);
-  Model model{fabric,
-              warp.table,
-              weft.table,
-              build_locks(scene, fabric),
-              build_bodies(scene),
-              build_start(scene, fabric),
-              {},  // loads: add_gravity's, when the scene has [gravity]
-              {stretch_term(fabric)}};
+  Model model{fabric, warp.table, weft.table, build_locks(scene, fabric), build_bodies(scene),
+              build_start(scene, fabric)};
   add_shear(scene, &model);
   add_bending(scene, &model);
   add_gravity(scene, warp, weft, &model);

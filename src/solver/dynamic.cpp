@@ -4,13 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
 
-#include "fabform/model/hinge_bending.hpp"
-#include "fabform/model/stretch_forces.hpp"
-#include "fabform/model/wind.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/thread_count.hpp"
 
@@ -47,47 +45,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The steepest segment of a table (N/m per unit strain); the slack range of a tension-only
-// table has slope 0, and the extended end segments keep their slopes.
-double steepest_slope(const TensionTable& table) {
-  double steepest = 0.0;
-  const auto& p = table.points();
-  for (std::size_t i = 1; i < p.size(); ++i)
-    steepest = std::max(steepest, (p[i].tension_N_per_m - p[i - 1].tension_N_per_m) /
-                                      (p[i].strain - p[i - 1].strain));
-  return steepest;
-}
-
-double spring_stiffness_bound(const Model& model, const Spring& s) {
-  return s.width * steepest_slope(model.table(s.kind)) / s.rest_length;
-}
-
-// A hinge's stiffness 2·B·s·c·cᵀ (per axis): half of each node's row sum, which is what a
-// spring's k is to the bound below (its block's row sums are 2k).
-void add_hinge_stiffness(const Model& model, std::vector<double>* stiffness) {
-  if (!model.bending_rigidity_Nm) return;
-  for (const Hinge& h : model.fabric.hinges()) {
-    const HingeStencil stencil = hinge_stencil(h);
-    double sum = 0.0;
-    for (int k = 0; k < stencil.count; ++k) sum += std::abs(stencil.weight[static_cast<std::size_t>(k)]);
-    for (int k = 0; k < stencil.count; ++k)
-      (*stiffness)[static_cast<std::size_t>(stencil.node[static_cast<std::size_t>(k)])] +=
-          *model.bending_rigidity_Nm * h.shape_factor * std::abs(stencil.weight[static_cast<std::size_t>(k)]) * sum;
-  }
-}
-
 }  // namespace
 
 TimeStep stable_time_step(const Model& model, const std::vector<double>& masses, double fraction) {
-  std::vector<double> stiffness(masses.size(), 0.0);
-  double stiffest = 0.0;
-  for (const Spring& s : model.fabric.springs()) {
-    const double k = spring_stiffness_bound(model, s);
-    stiffness[static_cast<std::size_t>(s.a)] += k;
-    stiffness[static_cast<std::size_t>(s.b)] += k;
-    stiffest = std::max(stiffest, k);
-  }
-  add_hinge_stiffness(model, &stiffness);
+  StiffnessBound bound{std::vector<double>(masses.size(), 0.0), 0.0};
+  for (const auto& term : model.terms) term->bound_stiffness(model, bound);
+  const std::vector<double>& stiffness = bound.per_node;
+  const double stiffest = bound.stiffest_element;
   TimeStep step;
   step.stability_limit = step.seed_limit = std::numeric_limits<double>::infinity();
   double lightest = std::numeric_limits<double>::infinity();
@@ -102,16 +66,6 @@ TimeStep stable_time_step(const Model& model, const std::vector<double>& masses,
 }
 
 namespace {
-
-// A velocity along the node's free axes, and for a node on a body within its tangent plane,
-// whichever way the normal part pointed (move_node expects a tangent step on a body).
-Eigen::Vector3d sliding(const Eigen::Vector3d& v, AxisMask lock, const NodeContact& contact) {
-  const Eigen::Vector3d free = remove_locked(v, lock);
-  if (!contact.active()) return free;
-  const Eigen::Vector3d normal = remove_locked(contact.normal, lock);
-  const double length2 = normal.squaredNorm();
-  return length2 == 0.0 ? free : free - (free.dot(normal) / length2) * normal;
-}
 
 class Dynamics {
  public:
@@ -139,7 +93,7 @@ class Dynamics {
 
   /// One time step driven by the resultants R at the current positions.
   void advance(const std::vector<Eigen::Vector3d>& forces) {
-    if (model_.wind) find_normals();
+    start_drags();
 // Dynamic: a node on a body costs more than a free one.
 #pragma omp parallel for schedule(dynamic, 256) if (model_.node_count() >= kMinParallelItems)
     for (int k = 0; k < model_.node_count(); ++k) advance_node(k, forces[static_cast<std::size_t>(k)]);
@@ -160,24 +114,22 @@ class Dynamics {
     if (contact.active() && remove_locked(r, lock).dot(contact.normal) > 0.0)
       contact = NodeContact{};  // R points out of the body: the node leaves it (§3.2.2)
     Eigen::Vector3d& v = state_.velocity[i];
-    v = sliding((1.0 - damping_) * v + step_.seconds / mass_[i] * r, lock, contact);
-    // The drag acts within the directions the node may move in: its normal projected on them,
-    // so that no reaction on a held axis leaks into a free one through (n·v)·n.
-    if (model_.wind)
-      v = after_wind_drag(step_.seconds * model_.wind->coefficient_N_s_m3 * model_.fabric.node_areas()[i] / mass_[i],
-                          sliding(normals_[i], lock, contact), v);
+    // Within the node's free directions: on a body, within its tangent plane, whichever way
+    // the normal part pointed (move_node expects a tangent step on a body).
+    const NodeFreedom freedom{lock, contact.active() ? &contact.normal : nullptr};
+    v = freedom.project((1.0 - damping_) * v + step_.seconds / mass_[i] * r);
+    for (const auto& drag : drags_) v = drag->after(k, step_.seconds, mass_[i], v, freedom);
     const NodeMove moved = move_node(model_, k, state_.x[i], step_.seconds * v, contact);
     if (moved.contact.active()) v -= std::min(v.dot(moved.contact.normal), 0.0) * moved.contact.normal;
     state_.x[i] = moved.x;
     contact = moved.contact;
   }
 
-  // Every node's normal before any moves: advance_node's drag needs them at the step's start.
-  void find_normals() {
-    normals_.resize(state_.x.size());
-#pragma omp parallel for schedule(static) if (model_.node_count() >= kMinParallelItems)
-    for (int k = 0; k < model_.node_count(); ++k)
-      normals_[static_cast<std::size_t>(k)] = node_normal(model_.fabric, state_.x, k);
+  // The velocity-dependent terms, taken at the step's start, before any node moves.
+  void start_drags() {
+    drags_.clear();
+    for (const auto& term : model_.terms)
+      if (auto drag = term->drag(model_, state_.x)) drags_.push_back(std::move(drag));
   }
 
   // Provot's deformation constraint, one pass: a spring longer than (1 + τ)·L is shortened to
@@ -241,7 +193,7 @@ class Dynamics {
   std::vector<double> mass_;
   TimeStep step_;
   double damping_;
-  std::vector<Eigen::Vector3d> normals_;  // at the step's start, when the wind blows
+  std::vector<std::unique_ptr<StepDrag>> drags_;  // the current step's
   std::vector<int> hops_;           // springs from each node to the nearest held node
   std::vector<int> stretch_order_;  // spring indices, nearest the held nodes first
 };
@@ -261,8 +213,6 @@ Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& op
                 const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("dynamic: " + why);
-  if (model.wind)
-    if (const std::string why = model.wind->invalid_reason(); !why.empty()) throw std::invalid_argument("dynamic: " + why);
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Dynamics dynamics(model, state, options);

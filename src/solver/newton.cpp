@@ -8,9 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "fabform/model/external_loads.hpp"
 #include "fabform/model/potential_energy.hpp"
-#include "fabform/model/stretch_forces.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "solver/free_directions.hpp"
 #include "solver/reduced_hessian.hpp"
@@ -129,15 +127,13 @@ class NewtonStep {
   // rounding (~1e-11 of the total); there a step is judged by whether it lowers ‖V‖∞ instead.
   std::optional<double> line_search(const std::vector<Eigen::Vector3d>& steps,
                                     const std::vector<Eigen::Vector3d>& forces, double residual) {
-    // Π's change: the elastic energy as a difference (its rounding is the noise), the loads'
-    // work from the moves themselves.
-    const double e0 = elastic_energy(model_, state_.x);
-    const double noise = 1e-11 * std::abs(e0);
+    // Π's change, each term's its own way; the energy the fabric stores sets its rounding.
+    const EnergyBaseline baseline = energy_baseline(model_, state_.x);
+    const double noise = 1e-11 * std::abs(baseline.stored);
     double alpha = 1.0;
     for (int t = 0; t <= options_.max_backtracks; ++t, alpha *= 0.5) {
       SolverState trial = moved(steps, alpha);
-      const double change =
-          elastic_energy(model_, trial.x) - e0 + load_energy_change(model_.loads, state_.x, trial.x);
+      const double change = energy_change(model_, state_.x, baseline, trial.x);
       const double predicted = first_order_change(forces, state_.x, trial.x);
       const bool decreases = change < 0.0 && change <= options_.armijo * std::min(predicted, 0.0);
       if (decreases || (std::abs(change) <= noise &&

@@ -1,7 +1,6 @@
 #pragma once
-// Newton's matrix: the Hessian of the fabric's stretch energy with every spring's stiffness
-// projected positive semi-definite, plus the hinges' exact constant Hessian, in the nodes' free
-// directions (free_directions.hpp).
+// Newton's matrix: the sum of the model's terms' stiffness (term.hpp), each positive
+// semi-definite, in the nodes' free directions (free_directions.hpp).
 #include <vector>
 
 #include <Eigen/Core>

@@ -8,7 +8,7 @@
 
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/potential_energy.hpp"
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/spring_strains.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/thread_count.hpp"
 
@@ -76,7 +76,7 @@ class Relaxation {
     // under a load: wherever it moves within the slack, the force on it is its load, unchanged,
     // and a step out of the slack overshoots. Then the first step that lowers the node's
     // energy is taken. Without loads, seed 003's rule is kept as published.
-    if (model_.loads.empty()) return;
+    if (!model_.loaded()) return;
     take_step(k, direction, [&](const NodeMove& candidate) {
       return node_energy_change(model_, state_.x, k, candidate.x) < 0.0;
     });

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/spring_strains.hpp"
 #include "support/shapes.hpp"
 
 namespace fabform {

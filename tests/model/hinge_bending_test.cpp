@@ -8,9 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <random>
 
 #include <Eigen/Geometry>
+
+#include "fabform/model/model.hpp"
+#include "support/term_checks.hpp"
 
 namespace fabform {
 namespace {
@@ -123,16 +127,16 @@ TEST(HingeBending, RigidAndAffineMotionsStoreNothingMore) {
 TEST(HingeBending, CollapsedFaceKeepsForcesBounded) {
   Model model{hinged({0.1, 0.1, 2, 2}), TensionTable({{0, 0}, {1, 500}}, "t"), TensionTable({{0, 0}, {1, 500}}, "t"),
               std::vector<AxisMask>(9, 0), {}, {}};
-  model.bending_rigidity_Nm = 6e-5;
+  const HingeBending hinges(6e-5);
   std::vector<Eigen::Vector3d> x = rest_of(model.fabric);
   for (auto& p : x)
     if (p.y() > 0.06) p.y() = 0.05 + 1e-13, p.z() = 1e-14;  // the top row onto the middle row
   for (int k = 0; k < model.node_count(); ++k) {
-    const Eigen::Vector3d f = bending_force_at(model, x, k, x[k]);
+    const Eigen::Vector3d f = hinges.force_at(model, x, k, x[k]);
     ASSERT_TRUE(f.allFinite());
     EXPECT_LT(f.norm(), 1e-2) << k;  // B/h² · h ~ 1e-3 N
   }
-  EXPECT_TRUE(std::isfinite(bending_energy(model, x)));
+  EXPECT_TRUE(std::isfinite(hinges.energy(model, x)));
 }
 
 // A 0.2 × 0.1 m fabric rolled round a cylinder of radius R with its axis along y: curvature
@@ -156,6 +160,25 @@ TEST(HingeBending, CylinderStoresHalfBKappaSquaredPerArea) {
     const double theta = width / n / radius;
     const double k = 4.0 * std::pow(std::sin(0.5 * theta), 2) / theta;
     EXPECT_NEAR(energy / continuum, (1.0 - 1.0 / n) * k * k / (theta * theta), 1e-12) << n;
+  }
+}
+
+// The hinges as a term: force, one node's change and stiffness (exact and constant) against
+// its energy, by central differences, on every hinged fabric bent at random.
+TEST(HingeBending, TermAgreesWithItsEnergyByFiniteDifferences) {
+  const HingeBending hinges(5.56e-5);
+  for (const Fabric& fabric : hinged_fabrics()) {
+    const TensionTable table({{0, 0}, {1, 500}}, "t");
+    const Model model{fabric, table, table, std::vector<AxisMask>(static_cast<std::size_t>(fabric.node_count()), 0),
+                      {}, {}};
+    std::mt19937 rng(21u);
+    std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+    Positions x = rest_of(fabric);
+    for (auto& p : x) p += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
+    test::expect_force_is_minus_the_gradient(model, hinges, x, 1e-6, 1e-6);
+    test::expect_node_changes_are_the_whole(model, hinges, x, {0, fabric.node_count() / 2},
+                                            Eigen::Vector3d(1e-3, -2e-3, 3e-3));
+    test::expect_stiffness_is_minus_the_force_derivative(model, hinges, x, 1e-6, 1e-8);
   }
 }
 

@@ -6,13 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <initializer_list>
+#include <memory>
 #include <random>
 #include <string>
 
 #include "fabform/material/material_csv.hpp"
-#include "fabform/model/external_loads.hpp"
+#include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/spring_term.hpp"
 #include "test_paths.hpp"
 
 namespace fabform {
@@ -20,14 +21,14 @@ namespace {
 
 // A free fabric of a shipped material, weighed with its density.
 Model weighed_fabric(const Fabric& grid, const std::string& fabric, double density_kg_m2) {
-  return Model{grid,
-               read_material_table(test::source_path("materials/" + fabric + "_warp.csv")),
-               read_material_table(test::source_path("materials/" + fabric + "_weft.csv")),
-               std::vector<AxisMask>(static_cast<std::size_t>(grid.node_count()), 0),
-               {},
-               {},
-               gravity_loads(grid, density_kg_m2, kStandardGravity_m_s2),
-               {}};
+  Model model{grid,
+              read_material_table(test::source_path("materials/" + fabric + "_warp.csv")),
+              read_material_table(test::source_path("materials/" + fabric + "_weft.csv")),
+              std::vector<AxisMask>(static_cast<std::size_t>(grid.node_count()), 0),
+              {},
+              {}};
+  model.terms.push_back(std::make_shared<Gravity>(grid, density_kg_m2, kStandardGravity_m_s2));
+  return model;
 }
 
 // −∂Π/∂x_k against node_force at every node and axis. h: truncation error ~h²·Π''' and
@@ -104,10 +105,11 @@ TEST(PotentialEnergy, MinusItsGradientIsTheNodeForceWithHinges) {
   spec.hinges = true;
   const Fabric fabric(spec);
   Model model = weighed_fabric(fabric, "white-swim-solid", 0.204);
-  model.bending_rigidity_Nm = 5.56e-5;
+  const auto hinges = std::make_shared<HingeBending>(5.56e-5);
+  model.terms.push_back(hinges);
   std::vector<Eigen::Vector3d> x = stretched_and_crumpled(fabric, 13u);
   for (auto& p : x) p.z() += 0.2 * (p.x() - 0.05) * (p.x() - 0.05) / 0.05;  // and curved
-  ASSERT_GT(bending_energy(model, x), 1e-3 * elastic_energy(model, x));
+  ASSERT_GT(hinges->energy(model, x), 1e-3 * energy_baseline(model, x).stored);
   expect_forces_are_minus_the_gradient(model, x);
 }
 
@@ -117,7 +119,7 @@ TEST(PotentialEnergy, NodeEnergyChangeIsTheChangeOfTheWholeWithHinges) {
   spec.hinges = true;
   const Fabric grid(spec);
   Model model = weighed_fabric(grid, "ivory-rib-knit", 0.276);
-  model.bending_rigidity_Nm = 4e-5;
+  model.terms.push_back(std::make_shared<HingeBending>(4e-5));
   const std::vector<Eigen::Vector3d> x = stretched_and_crumpled(grid, 14u);
   expect_node_changes_are_the_whole(model, x, {0, grid.node(2, 1), grid.node(4, 3)});
 }
@@ -136,7 +138,7 @@ TEST(PotentialEnergy, WithoutLoadsItIsTheStretchEnergy) {
   Model model{grid, table, table, std::vector<AxisMask>(9, 0), {}, {}};
   std::vector<Eigen::Vector3d> x;
   for (int k = 0; k < grid.node_count(); ++k) x.push_back(1.2 * grid.rest_position(k));
-  EXPECT_EQ(potential_energy(model, x), stretch_energy(model, x));
+  EXPECT_EQ(potential_energy(model, x), SpringTerm(SpringTerm::Role::stretch).energy(model, x));
   EXPECT_GT(potential_energy(model, x), 0.0);
 }
 

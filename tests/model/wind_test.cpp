@@ -5,9 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <Eigen/Geometry>
+
+#include "fabform/model/model.hpp"
+#include "support/clamped_fabric.hpp"
 
 namespace fabform {
 namespace {
@@ -158,6 +162,37 @@ TEST(Wind, NeedsADirectionAndAStrength) {
   EXPECT_NE(wind({0, 0, 1}, 0.0).invalid_reason(), "");
   EXPECT_NE(wind({0, 0, 1}, -1.0).invalid_reason(), "");
   EXPECT_NE(wind({0, 0, 1}, INFINITY).invalid_reason(), "");
+}
+
+// The wind as a term: at rest its force is C·A·(n·v_wind)·n on each node; it has no potential,
+// so only dynamic takes it, and its drag over a step is after_wind_drag's within the node's
+// free directions.
+TEST(WindLoad, IsTheWindAtRestWithItsDragForDynamicAlone) {
+  Model model = test::clamped_fabric(4, 0.01);
+  test::lift_interior(model, 0.01);
+  const Wind blowing = wind({0.5, 0.0, 3.0}, 1.5);
+  const WindLoad load(blowing);
+  const Positions& x = model.start;
+  for (int k = 0; k < model.node_count(); ++k) {
+    const double area = model.fabric.node_areas()[static_cast<std::size_t>(k)];
+    const Eigen::Vector3d at = x[static_cast<std::size_t>(k)] + Eigen::Vector3d(0, 0, 1e-3);
+    EXPECT_EQ(load.force_at(model, x, k, at),
+              wind_force(blowing, area, node_normal(model.fabric, x, k, at), Eigen::Vector3d::Zero()));
+  }
+  EXPECT_EQ(load.energy(model, x), 0.0);
+  EXPECT_TRUE(load.external());
+  EXPECT_EQ(load.refusal("dynamic"), "");
+  EXPECT_NE(load.refusal("newton").find("only solver dynamic models it, not newton"), std::string::npos);
+  EXPECT_NE(load.refusal("relax"), "");
+  const auto drag = load.drag(model, x);
+  ASSERT_NE(drag, nullptr);
+  const int inner = model.fabric.node(2, 2);
+  const double area = model.fabric.node_areas()[static_cast<std::size_t>(inner)];
+  const Eigen::Vector3d v(0.1, 0.2, 0.3), n = node_normal(model.fabric, x, inner);
+  EXPECT_EQ(drag->after(inner, 1e-3, 2e-4, v, NodeFreedom{}), after_wind_drag(1e-3 * 1.5 * area / 2e-4, n, v));
+  const Eigen::Vector3d held = drag->after(inner, 1e-3, 2e-4, Eigen::Vector3d(0.1, 0.2, 0.0), NodeFreedom{kLockZ, nullptr});
+  EXPECT_EQ(held.z(), 0.0) << "the drag stays within the free directions";
+  EXPECT_THROW(WindLoad(wind({0, 0, 0})), std::invalid_argument);
 }
 
 }  // namespace

@@ -46,6 +46,8 @@ TEST(FabricFigures, UniformStretchIsEverywhere) {
   EXPECT_NEAR(f.contact_area_m2, f.area_formed_m2, kAreaTolerance);
   EXPECT_NEAR(f.max_warp.strain, 0.107, 1e-12);
   EXPECT_NEAR(f.max_weft.strain, 0.053, 1e-12);
+  EXPECT_NEAR(f.min_warp.strain, 0.107, 1e-12) << "uniform: the smallest is the largest";
+  EXPECT_NEAR(f.min_weft.strain, 0.053, 1e-12);
   const StrainHistogram& h = f.histogram;
   ASSERT_EQ(h.edges.size(), h.warp_area_m2.size() + 1);
   for (std::size_t b = 0; b < h.warp_area_m2.size(); ++b) {
@@ -69,6 +71,23 @@ TEST(FabricFigures, TentHasItsAreaAndItsPeakOnTheSlope) {
   EXPECT_NEAR(f.max_warp.strain, slope - 1.0, 1e-12);
   EXPECT_NEAR(f.max_weft.strain, 0.0, 1e-12);
   EXPECT_GT(f.max_warp.at_m.z(), 0.0);
+}
+
+// Gathered across the weft, more the farther along the warp: weft strain −0.4·x/W, so the
+// most compressed weft springs are on the last column, at −40 %; the least compressed, on the
+// first, at rest.
+TEST(FabricFigures, SmallestStrainIsTheMostCompressedSpring) {
+  Model model = flat(10);
+  std::vector<Eigen::Vector3d> x = model.start;
+  for (auto& p : x) p.y() *= 1.0 - 0.4 * p.x() / 0.1;
+  const FabricFigures f = fabric_figures(model, x, std::vector<unsigned char>(x.size(), 0));
+  EXPECT_NEAR(f.min_weft.strain, -0.4, 1e-12);
+  EXPECT_EQ(f.min_weft.i, 10);
+  EXPECT_NEAR(f.min_weft.at_m.x(), 0.1, 1e-15);
+  EXPECT_NEAR(f.max_weft.strain, 0.0, 1e-12);
+  EXPECT_EQ(f.max_weft.i, 0);
+  EXPECT_NEAR(f.min_warp.strain, 0.0, 1e-12) << "the warp sides only tilt; those along y = 0 keep their length";
+  EXPECT_EQ(f.min_warp.j, 0);
 }
 
 // Contact on one corner node only: a quarter of that corner cell's area.

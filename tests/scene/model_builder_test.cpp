@@ -7,9 +7,11 @@
 
 #include "fabform/io/obj_text.hpp"
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/gravity.hpp"
 #include "fabform/scene/scene_toml.hpp"
 #include "fabform/solver/relax.hpp"
 #include "support/shapes.hpp"
+#include "support/terms.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fabform {
@@ -157,20 +159,26 @@ TEST_F(ModelBuilder, TwoBodiesInTheirOwnUnitsBothHoldTheFabric) {
 TEST_F(ModelBuilder, GravityWeighsTheFabricWithTheMaterialsDensity) {
   dir.write("table.csv", "areal_density_kg_m2,0.25\nstrain,tension_N_per_m\n0,0\n1,500\n");
   const Model model = build(scene("[gravity]\nacceleration_m_s2 = 9.81\n"));
-  ASSERT_EQ(model.loads.size(), static_cast<std::size_t>(model.node_count()));
+  const Gravity* gravity = test::find_term<Gravity>(model);
+  ASSERT_NE(gravity, nullptr);
+  ASSERT_EQ(gravity->loads().size(), static_cast<std::size_t>(model.node_count()));
   Eigen::Vector3d total = Eigen::Vector3d::Zero();
-  for (const auto& f : model.loads) total += f;
+  for (const auto& f : gravity->loads()) total += f;
   EXPECT_NEAR(total.z(), -0.25 * 0.01 * 9.81, 1e-12 * 0.25 * 0.01 * 9.81);
   EXPECT_EQ(total.head<2>().norm(), 0.0);
-  ASSERT_EQ(model.modelled.size(), 2u);
-  EXPECT_NE(model.modelled[1].find("gravity: 9.81 m/s²"), std::string::npos) << model.modelled[1];
-  EXPECT_NE(model.modelled[1].find("0.25 kg/m²"), std::string::npos) << model.modelled[1];
+  const std::vector<std::string> modelled = model.modelled();
+  ASSERT_EQ(modelled.size(), 2u);
+  EXPECT_NE(modelled[1].find("gravity: 9.81 m/s²"), std::string::npos) << modelled[1];
+  EXPECT_NE(modelled[1].find("0.25 kg/m²"), std::string::npos) << modelled[1];
+  EXPECT_TRUE(model.loaded());
 }
 
 TEST_F(ModelBuilder, NoGravityNoLoads) {
   const Model model = build(scene(""));
-  EXPECT_TRUE(model.loads.empty());
-  EXPECT_EQ(model.modelled.size(), 1u);
+  EXPECT_FALSE(model.loaded());
+  EXPECT_EQ(test::find_term<Gravity>(model), nullptr);
+  ASSERT_EQ(model.modelled().size(), 1u);
+  EXPECT_EQ(model.modelled()[0].rfind("stretch: warp and weft springs of a rectangle", 0), 0u) << model.modelled()[0];
 }
 
 TEST_F(ModelBuilder, GravityWithoutADensityIsBlamedOnTheGravityTable) {
@@ -202,7 +210,7 @@ TEST_F(ModelBuilder, GravityWithNothingToHangFromIsRefused) {
   const InputError e = error(fabric + "[[constraint]]\nnodes = \"perimeter\"\naxes = \"xy\"\n");
   EXPECT_EQ(e.where().line, 6) << e.what();
   EXPECT_NE(std::string(e.what()).find("nothing to hold the fabric up"), std::string::npos) << e.what();
-  EXPECT_EQ(build(fabric + "[[constraint]]\nnodes = \"corners\"\naxes = \"z\"\n").loads.size(), 25u);
+  EXPECT_TRUE(build(fabric + "[[constraint]]\nnodes = \"corners\"\naxes = \"z\"\n").loaded());
 }
 
 // One file stating the density is enough; the other may leave it out.
@@ -212,7 +220,8 @@ TEST_F(ModelBuilder, OneFileStatingTheDensityIsEnough) {
   const std::string weft = "weft = \"table.csv\"";
   text.replace(text.find(weft), weft.size(), "weft = \"weft.csv\"");
   const Model model = build(text);
-  EXPECT_NEAR(model.loads[0].z(), -0.3 * model.fabric.node_areas()[0] * kStandardGravity_m_s2, 1e-15);
+  ASSERT_NE(test::find_term<Gravity>(model), nullptr);
+  EXPECT_NEAR(test::find_term<Gravity>(model)->loads()[0].z(), -0.3 * model.fabric.node_areas()[0] * kStandardGravity_m_s2, 1e-15);
 }
 
 }  // namespace

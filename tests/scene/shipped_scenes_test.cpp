@@ -6,9 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "fabform/model/equilibrium.hpp"
-#include "fabform/model/hinge_bending.hpp"
-#include "fabform/fabric/spring.hpp"
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/potential_energy.hpp"
+#include "fabform/model/spring_strains.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
 #include "fabform/solver/solve.hpp"
@@ -17,34 +16,18 @@
 namespace fabform {
 namespace {
 
-// The energy of the springs and hinges at node k: the only part of the total that moving k
-// changes (besides its weight, added as a force below).
-double energy_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int k) {
-  double energy = node_bending_energy(model, x, k, x[static_cast<std::size_t>(k)]);
-  for (const int s : model.fabric.springs_at(k)) {
-    if (s < 0) continue;
-    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
-    energy += spring_energy(x[static_cast<std::size_t>(spring.a)], x[static_cast<std::size_t>(spring.b)],
-                            spring, model.table(spring.kind));
-  }
-  return energy;
-}
 
-// −∂E/∂x_k by central differences. Step 1e-9 m: the local energy (≤ ~1e-2 J) rounds at
+// −∂Π/∂x_k by central differences of Π's change as node k moves (each term's, from its energy,
+// a load's from its work; never from a force). Step 1e-9 m: the local energy (≤ ~1e-2 J) rounds at
 // ~1e-18 J, so the quotient's noise is ≤ ~1e-8 N; a table kink inside the step errs by slope
 // jump × width × step / length ~1e-8 N too.
 Eigen::Vector3d energy_gradient_force(const Model& model, std::vector<Eigen::Vector3d>& x, int k) {
   const double h = 1e-9;
   Eigen::Vector3d force;
-  auto& node = x[static_cast<std::size_t>(k)];
+  const Eigen::Vector3d node = x[static_cast<std::size_t>(k)];
   for (int axis = 0; axis < 3; ++axis) {
-    const double kept = node[axis];
-    node[axis] = kept + h;
-    const double above = energy_at(model, x, k);
-    node[axis] = kept - h;
-    const double below = energy_at(model, x, k);
-    node[axis] = kept;
-    force[axis] = -(above - below) / (2.0 * h);
+    const Eigen::Vector3d step = h * Eigen::Vector3d::Unit(axis);
+    force[axis] = -(node_energy_change(model, x, k, node + step) - node_energy_change(model, x, k, node - step)) / (2.0 * h);
   }
   return force;
 }
@@ -54,7 +37,6 @@ double independent_residual(const Model& model, std::vector<Eigen::Vector3d> x) 
   double worst = 0.0;
   for (int k = 0; k < model.node_count(); ++k) {
     Eigen::Vector3d r = energy_gradient_force(model, x, k);
-    if (!model.loads.empty()) r += model.loads[static_cast<std::size_t>(k)];  // constant: exact
     std::optional<SurfacePoint> touching;
     for (const RigidBody& body : model.bodies)
       if (auto s = body.closest_within(x[static_cast<std::size_t>(k)], 1e-8)) touching = s;

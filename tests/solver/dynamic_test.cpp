@@ -10,9 +10,11 @@
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/spring_energy.hpp"
+#include "fabform/model/wind.hpp"
 #include "fabform/solver/newton.hpp"
 #include "support/clamped_fabric.hpp"
 #include "support/fabric_over_sphere.hpp"
+#include "support/terms.hpp"
 
 namespace fabform {
 namespace {
@@ -111,13 +113,13 @@ Eigen::MatrixXd start_stiffness(const Model& model) {
     for (int p = 0; p < 2; ++p)
       for (int q = 0; q < 2; ++q) k.block<3, 3>(at[p], at[q]) += h.block<3, 3>(3 * p, 3 * q);
   }
-  if (model.bending_rigidity_Nm)
+  if (const auto* hinges = test::find_term<HingeBending>(model))
     for (const Hinge& h : model.fabric.hinges()) {
       const HingeStencil c = hinge_stencil(h);
       for (int p = 0; p < c.count; ++p)
         for (int q = 0; q < c.count; ++q)
           k.block<3, 3>(3 * c.node[p], 3 * c.node[q]) +=
-              2.0 * *model.bending_rigidity_Nm * h.shape_factor * c.weight[p] * c.weight[q] * Eigen::Matrix3d::Identity();
+              2.0 * hinges->rigidity_Nm() * h.shape_factor * c.weight[p] * c.weight[q] * Eigen::Matrix3d::Identity();
     }
   return k;
 }
@@ -129,7 +131,7 @@ Model hinged_fabric() {
   Model model = clamped_fabric(6, 0.05);
   model.fabric = Fabric(spec);
   model.warp = model.weft = test::linear_table(1e-3);
-  model.bending_rigidity_Nm = 1e-3;
+  model.terms.push_back(std::make_shared<HingeBending>(1e-3));
   return model;
 }
 
@@ -275,7 +277,7 @@ TEST(DynamicWind, FreeSheetTakesUpTheWindAcrossIt) {
   Model model{sheet, test::linear_table(500.0), test::linear_table(500.0),
               std::vector<AxisMask>(flat.size(), 0), {}, flat};
   const double across = 2.0, coefficient = 1.5, density = 0.2;
-  model.wind = Wind{{0.3, 0.0, across}, coefficient};
+  model.terms.push_back(std::make_shared<WindLoad>(Wind{{0.3, 0.0, across}, coefficient}));
   DynamicOptions options = to(1e-12);
   options.damping = 0.0;
   options.areal_density_kg_m2 = density;
@@ -304,7 +306,7 @@ TEST(DynamicWind, FreeSheetTakesUpTheWindAcrossIt) {
 TEST(DynamicWind, ClampedMembraneRestsWhereItsSpringsHoldTheWind) {
   const auto rest = [](const Eigen::Vector3d& velocity, double coefficient, Summary* summary) {
     Model model = clamped_fabric(6, 0.01);
-    model.wind = Wind{velocity, coefficient};
+    model.terms.push_back(std::make_shared<WindLoad>(Wind{velocity, coefficient}));
     const SolverState state = run_dynamic(model, to(1e-9), summary);
     expect_converged_outside(model, state, *summary);
     return state;
@@ -327,10 +329,10 @@ TEST(DynamicWind, ClampedMembraneRestsWhereItsSpringsHoldTheWind) {
 // A node held in x and y only: the reaction on its held axes must not leak into its free one
 // through the drag's (n·v)·n, or the run settles off equilibrium and never converges.
 TEST(DynamicWind, PartlyHeldNodeComesToRest) {
-  Model model = clamped_fabric(6, 0.01);
-  model.locks[static_cast<std::size_t>(model.fabric.node(2, 3))] = kLockX | kLockY;
   for (const double coefficient : {1.0, 20.0}) {
-    model.wind = Wind{{0.0, 0.0, 4.0}, coefficient};
+    Model model = clamped_fabric(6, 0.01);
+    model.locks[static_cast<std::size_t>(model.fabric.node(2, 3))] = kLockX | kLockY;
+    model.terms.push_back(std::make_shared<WindLoad>(Wind{{0.0, 0.0, 4.0}, coefficient}));
     Summary summary;
     const SolverState state = run_dynamic(model, to(1e-9), &summary);
     expect_converged_outside(model, state, summary);

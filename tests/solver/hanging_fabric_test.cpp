@@ -5,10 +5,12 @@
 // level (every column carries the same weight per width), so the rest is this chain exactly.
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <string>
 
 #include "fabform/model/equilibrium.hpp"
-#include "fabform/model/external_loads.hpp"
+#include "fabform/model/gravity.hpp"
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 
@@ -29,7 +31,7 @@ Model hanging_fabric(int divisions_warp, int divisions_weft) {
     if (grid.j_of(k) == 0) locks[static_cast<std::size_t>(k)] = kLockX | kLockY | kLockZ;
   }
   Model model{grid, test::linear_table(kStiffness_N_m), test::linear_table(kStiffness_N_m), locks, {}, start};
-  model.loads = gravity_loads(grid, kDensity_kg_m2, kStandardGravity_m_s2);
+  model.terms.push_back(std::make_shared<Gravity>(grid, kDensity_kg_m2, kStandardGravity_m_s2));
   return model;
 }
 

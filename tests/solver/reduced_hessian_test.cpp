@@ -5,9 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <random>
 
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/hinge_bending.hpp"
 #include "support/clamped_fabric.hpp"
 
 namespace fabform {
@@ -18,7 +19,7 @@ Model bent_hinged_fabric() {
   spec.hinges = true;
   Model model = test::clamped_fabric(4, 0.05);
   model.fabric = Fabric(spec);
-  model.bending_rigidity_Nm = 2e-3;
+  model.terms.push_back(std::make_shared<HingeBending>(2e-3));
   std::mt19937 rng(11u);
   std::uniform_real_distribution<double> lift(-0.002, 0.002);
   for (int k = 0; k < model.node_count(); ++k)
@@ -59,7 +60,7 @@ TEST(ReducedHessian, HingesAddTheirStiffness) {
   Model model = bent_hinged_fabric();
   const FreeDirections d = free_directions(model, std::vector<NodeContact>(model.start.size()));
   const Eigen::MatrixXd with(reduced_hessian(model, model.start, d));
-  model.bending_rigidity_Nm.reset();
+  model.terms.pop_back();
   const Eigen::MatrixXd without(reduced_hessian(model, model.start, d));
   EXPECT_GT((with - without).cwiseAbs().maxCoeff(), 1e-3 * without.cwiseAbs().maxCoeff());
 }

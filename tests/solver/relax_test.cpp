@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <cmath>
 
 #include "fabform/model/equilibrium.hpp"
-#include "fabform/model/external_loads.hpp"
+#include "fabform/model/gravity.hpp"
 #include "support/clamped_fabric.hpp"
 #include "support/rotated_fabric.hpp"
 #include "support/shapes.hpp"
@@ -76,7 +78,7 @@ TEST(Relax, LiftedFabricRelaxesToFlatWithoutBody) {
 // from that would move no node for ever.
 TEST(Relax, FabricLaidOutAtRestFallsUnderItsWeight) {
   Model model = test::rotated_fabric_at_rest(8);
-  model.loads = gravity_loads(model.fabric, 0.2, kStandardGravity_m_s2);
+  model.terms.push_back(std::make_shared<Gravity>(model.fabric, 0.2, kStandardGravity_m_s2));
   SolverState state = SolverState::at_start(model);
   RelaxOptions options;
   options.tolerance_N = 1e-8;  // below a node's weight, ~3e-4 N

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <stdexcept>
 
+#include "fabform/model/wind.hpp"
 #include "support/clamped_fabric.hpp"
 
 namespace fabform {
@@ -28,7 +30,7 @@ TEST(Solve, RunsTheNamedSolver) {
 // Wind depends on the fabric's velocity and has no potential: only dynamic models it.
 TEST(Solve, WindIsForDynamicOnly) {
   Model model = test::clamped_fabric(4, 0.01);
-  model.wind = Wind{{0, 0, 3}, 1.0};
+  model.terms.push_back(std::make_shared<WindLoad>(Wind{{0, 0, 3}, 1.0}));
   for (const char* name : {"relax", "newton"}) {
     SolverState state = SolverState::at_start(model);
     SolverSpec spec;

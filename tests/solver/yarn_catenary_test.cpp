@@ -6,9 +6,11 @@
 // (Newton, which gets there in milliseconds; relax and dynamic need minutes on so stiff a yarn).
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <cmath>
 
-#include "fabform/model/external_loads.hpp"
+#include "fabform/model/gravity.hpp"
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 
@@ -49,7 +51,7 @@ Model yarn(int divisions) {
     if (grid.i_of(k) == 0 || grid.i_of(k) == divisions) locks[static_cast<std::size_t>(k)] = kLockX | kLockY | kLockZ;
   }
   Model model{grid, test::linear_table(kStiffness_N_m), test::linear_table(kStiffness_N_m), locks, {}, start};
-  model.loads = gravity_loads(grid, kDensity_kg_m2, kStandardGravity_m_s2);
+  model.terms.push_back(std::make_shared<Gravity>(grid, kDensity_kg_m2, kStandardGravity_m_s2));
   return model;
 }
 

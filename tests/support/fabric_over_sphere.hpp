@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/potential_energy.hpp"
 #include "fabform/solver/solver_state.hpp"
 #include "support/clamped_fabric.hpp"
 #include "support/shapes.hpp"
@@ -40,8 +40,8 @@ inline Model fabric_over_sphere(double lift) {
 
 inline void expect_same_rest(const Model& model, const SolverState& a, const SolverState& b) {
   EXPECT_LE(max_distance(a.x, b.x), kFacet / 20.0);
-  const double energy = stretch_energy(model, a.x);
-  EXPECT_NEAR(stretch_energy(model, b.x), energy, 1e-6 * energy);
+  const double energy = potential_energy(model, a.x);
+  EXPECT_NEAR(potential_energy(model, b.x), energy, 1e-6 * energy);
 }
 
 }  // namespace fabform::test

@@ -11,12 +11,13 @@
 // positive semi-definite. For a deformation that is not isometric, a cell shrinking unevenly in
 // its own plane, k is not zero: the hinge then resists the unevenness as well.
 #include <array>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "fabform/fabric/hinge.hpp"
-#include "fabform/model/model.hpp"
+#include "fabform/model/term.hpp"
 
 namespace fabform {
 
@@ -38,13 +39,31 @@ struct HingeStencil {
 };
 HingeStencil hinge_stencil(const Hinge& hinge);
 
-/// The model's bending: the sum over its fabric's hinges (0 without bending rigidity).
-double bending_energy(const Model& model, const std::vector<Eigen::Vector3d>& x);
-/// The hinges' force on `node` placed at `at`, −∂E/∂x_node = −Σ 2·B·s·c_node·k.
-Eigen::Vector3d bending_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
-                                 const Eigen::Vector3d& at);
-/// The energy of the hinges that reach `node`, with it at `at`.
-double node_bending_energy(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
-                           const Eigen::Vector3d& at);
+/// The fabric's hinges as a term of the model, with its flexural rigidity B (N·m).
+class HingeBending final : public Term {
+ public:
+  explicit HingeBending(double rigidity_Nm) : rigidity_Nm_(rigidity_Nm) {}
+  double rigidity_Nm() const { return rigidity_Nm_; }
+
+  std::string describe(const Model& model) const override;
+  /// −∂E/∂x_node = −Σ 2·B·s·c_node·k over the hinges that reach the node.
+  Eigen::Vector3d force_at(const Model& model, const Positions& x, int node,
+                           const Eigen::Vector3d& at) const override;
+  double energy(const Model& model, const Positions& x) const override;
+  double node_energy_change(const Model& model, const Positions& x, int node,
+                            const Eigen::Vector3d& at) const override;
+  /// 2·B·s·(c_a·c_b)·I over each pair of the nodes a hinge reaches: exact, constant, positive
+  /// semi-definite.
+  void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
+  /// Per node, half its row sum of |2·B·s·c·cᵀ|, as a spring's k is to its block.
+  void bound_stiffness(const Model& model, StiffnessBound& bound) const override;
+  bool resists_bending() const override { return true; }
+
+ private:
+  /// The energy of the hinges that reach `node`, with it at `at`.
+  double node_energy(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const;
+
+  double rigidity_Nm_;
+};
 
 }  // namespace fabform

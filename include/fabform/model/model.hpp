@@ -1,6 +1,8 @@
 #pragma once
 // Everything a solver needs, in SI, validated: the fabric and the tables of its springs, the
-// per-node axis locks, the rigid bodies, the starting positions and the constant loads.
+// per-node axis locks, the rigid bodies, the starting positions, and the physical terms that
+// act on the fabric (term.hpp). A model starts with its fabric's springs as terms; a scene adds
+// what else it asks for (hinges, weight, wind, ...).
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,24 +13,26 @@
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/rigid_body.hpp"
 #include "fabform/material/tension_table.hpp"
-#include "fabform/model/wind.hpp"
+#include "fabform/model/term.hpp"
 
 namespace fabform {
 
 struct Model {
+  /// A model of the fabric's springs alone: stretch (warp and weft), and shear and bend springs
+  /// where the fabric has them (their tables, `shear` and `bend`, are then the caller's to set).
+  Model(Fabric fabric, TensionTable warp, TensionTable weft, std::vector<AxisMask> locks,
+        std::vector<RigidBody> bodies, std::vector<Eigen::Vector3d> start);
+
   Fabric fabric;
   TensionTable warp;
   TensionTable weft;
   std::vector<AxisMask> locks;  // one per node
   std::vector<RigidBody> bodies;
   std::vector<Eigen::Vector3d> start;  // one per node
-  std::vector<Eigen::Vector3d> loads = {};  // N, one per node (the fabric's weight); empty: none
-  std::vector<std::string> modelled = {};   // each term of the model, said for result.json
   double areal_density_kg_m2 = 0.0;         // the fabric's, when its weight is modelled; else 0
-  std::optional<double> bending_rigidity_Nm = {};  // B of the fabric's hinges, when it has them
   std::optional<TensionTable> shear = {};   // the shear springs' table, when the fabric has them
   std::optional<TensionTable> bend = {};    // the bend springs' table, when the fabric has them
-  std::optional<Wind> wind = {};             // seed 004's wind, when the scene has one (dynamic only)
+  TermList terms;                           // every term acting on the fabric, springs first
 
   /// The table a kind of spring follows; the model builder makes sure the fabric's kinds have one.
   const TensionTable& table(SpringKind kind) const {
@@ -41,6 +45,21 @@ struct Model {
     return warp;
   }
   int node_count() const { return fabric.node_count(); }
+
+  /// Each term, said in one line, in the order the model holds them (result.json's "modelled").
+  std::vector<std::string> modelled() const;
+  /// Whether some term is an external load (a force that acts however the springs are set).
+  bool loaded() const;
+  /// Whether some term resists folding.
+  bool resists_bending() const;
 };
+
+/// R at `node` with the node moved to `at` and every other node where `x` has it: the sum of
+/// every term's force on it (for a velocity-dependent term, its force on the fabric at rest).
+Eigen::Vector3d node_force_at(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at);
+
+inline Eigen::Vector3d node_force(const Model& model, const Positions& x, int node) {
+  return node_force_at(model, x, node, x[static_cast<std::size_t>(node)]);
+}
 
 }  // namespace fabform

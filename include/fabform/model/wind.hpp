@@ -5,13 +5,14 @@
 // the bracket, so a region feels the same wind however finely it is meshed; seed 004's
 // per-node constant is C·A_k of its grid. The force has no potential and depends on velocity:
 // only `dynamic` models it. At rest (v = 0) it is a load that follows the fabric's normal,
-// and that part enters every node's resultant R (stretch_forces.hpp).
+// and that part enters every node's resultant R (model.hpp).
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "fabform/fabric/fabric.hpp"
+#include "fabform/model/term.hpp"
 
 namespace fabform {
 
@@ -46,5 +47,33 @@ Eigen::Vector3d wind_force(const Wind& wind, double node_area_m2, const Eigen::V
 /// step as Δt → 0. n is the unit normal, or its projection on the directions a held node or a
 /// node on a body may move in (then v lies in them, and so does the result).
 Eigen::Vector3d after_wind_drag(double drag_step, const Eigen::Vector3d& normal, const Eigen::Vector3d& velocity_m_s);
+
+/// The wind as a term of the model: its force at rest in every node's R, its drag in each of
+/// dynamic's steps. It has no potential, so only `dynamic` models it.
+class WindLoad final : public Term {
+ public:
+  /// Throws std::invalid_argument when wind.invalid_reason() is not empty.
+  explicit WindLoad(const Wind& wind);
+  const Wind& wind() const { return wind_; }
+
+  std::string describe(const Model& model) const override;
+  /// C·A·(n·v_wind)·n, n the node's normal with it at `at`.
+  Eigen::Vector3d force_at(const Model& model, const Positions& x, int node,
+                           const Eigen::Vector3d& at) const override;
+  double energy(const Model& /*model*/, const Positions& /*x*/) const override { return 0.0; }
+  double node_energy_change(const Model& /*model*/, const Positions& /*x*/, int /*node*/,
+                            const Eigen::Vector3d& /*at*/) const override {
+    return 0.0;
+  }
+  /// The drag −C·A·(n·v)·n, taken implicitly (after_wind_drag) with every node's normal at the
+  /// step's start, projected on the directions the node may move in so that no reaction on a
+  /// held axis leaks into a free one through (n·v)·n.
+  std::unique_ptr<StepDrag> drag(const Model& model, const Positions& x) const override;
+  bool external() const override { return true; }
+  std::string refusal(const std::string& solver) const override;
+
+ private:
+  Wind wind_;
+};
 
 }  // namespace fabform

@@ -1,6 +1,7 @@
 #pragma once
 // The figures engineers read off a formed fabric: its area flat and formed, the area resting
-// on the bodies, the largest warp and weft strains and where they are, and how the fabric's
+// on the bodies, the largest and smallest warp and weft strains and where they are (the
+// smallest, negative, says where the fabric is compressed: where it gathers), and how the fabric's
 // area spreads over strain (area-weighted histograms, warp and weft).
 #include <vector>
 
@@ -10,8 +11,8 @@
 
 namespace fabform {
 
-/// The most stretched spring of one direction: its strain, its first node's lattice indices and
-/// its midpoint in the formed fabric.
+/// The most stretched (or most compressed) spring of one direction: its strain, its first node's
+/// lattice indices and its midpoint in the formed fabric.
 struct StrainPeak {
   double strain = 0.0;
   int i = -1, j = -1;
@@ -32,6 +33,8 @@ struct FabricFigures {
   double contact_area_m2 = 0.0;  // the share of formed area around the nodes on a body
   StrainPeak max_warp;
   StrainPeak max_weft;
+  StrainPeak min_warp;
+  StrainPeak min_weft;
   StrainHistogram histogram;
 };
 

@@ -11,7 +11,7 @@
 #include "fabform/fabric/initial_shape.hpp"
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/placement.hpp"
-#include "fabform/model/external_loads.hpp"
+#include "fabform/model/gravity.hpp"
 #include "fabform/solver/solve.hpp"
 
 namespace fabform {

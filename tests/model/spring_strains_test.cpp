@@ -1,5 +1,5 @@
 // The springs' pull on a node and the deformation relax's step is taken from.
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/spring_strains.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "fabform/model/stretch_forces.hpp"
+#include "fabform/model/spring_strains.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,6 @@
 #include <limits>
 
 #include "fabform/fabric/spring.hpp"
-#include "fabform/model/hinge_bending.hpp"
-#include "fabform/model/wind.hpp"
-#include "fabform/thread_count.hpp"
 
 namespace fabform {
 namespace {
@@ -18,23 +15,6 @@ namespace {
 constexpr double kLengthRoundings = 16.0;
 
 }  // namespace
-
-Eigen::Vector3d node_force_at(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
-                              const Eigen::Vector3d& at) {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  for (const int s : model.fabric.springs_at(node)) {
-    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
-    const int other = spring.a == node ? spring.b : spring.a;
-    force += spring_force_on_a(at, x[static_cast<std::size_t>(other)], spring,
-                               model.table(spring.kind));
-  }
-  if (model.bending_rigidity_Nm) force += bending_force_at(model, x, node, at);
-  if (!model.loads.empty()) force += model.loads[static_cast<std::size_t>(node)];
-  if (model.wind)  // at rest; dynamic adds the drag of the node's own velocity
-    force += wind_force(*model.wind, model.fabric.node_areas()[static_cast<std::size_t>(node)],
-                        node_normal(model.fabric, x, node, at), Eigen::Vector3d::Zero());
-  return force;
-}
 
 double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x, int node) {
   double sum = 0.0;
@@ -51,24 +31,6 @@ double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x
     if (deformation > rounding) sum += deformation;
   }
   return sum;
-}
-
-double stretch_energy(const Model& model, const std::vector<Eigen::Vector3d>& x) {
-  const std::vector<Spring>& springs = model.fabric.springs();
-  const auto count = static_cast<std::ptrdiff_t>(springs.size());
-  // Each spring's energy in parallel, summed in spring order: the same bits for any thread
-  // count, so a line search decides alike on 1 or 2 threads (a reduction's order would not).
-  std::vector<double> energies(springs.size());
-#pragma omp parallel for schedule(static) if (count >= kMinParallelItems)
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
-    const Spring& spring = springs[static_cast<std::size_t>(i)];
-    energies[static_cast<std::size_t>(i)] =
-        spring_energy(x[static_cast<std::size_t>(spring.a)], x[static_cast<std::size_t>(spring.b)],
-                      spring, model.table(spring.kind));
-  }
-  double energy = 0.0;
-  for (const double e : energies) energy += e;
-  return energy;
 }
 
 NodeStrains node_strains(const Model& model, const std::vector<Eigen::Vector3d>& x) {

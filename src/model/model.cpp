@@ -1,0 +1,52 @@
+#include "fabform/model/model.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <utility>
+
+#include "fabform/model/spring_term.hpp"
+
+namespace fabform {
+namespace {
+
+bool has_springs(const Fabric& fabric, SpringKind kind) {
+  return std::any_of(fabric.springs().begin(), fabric.springs().end(),
+                     [&](const Spring& s) { return s.kind == kind; });
+}
+
+}  // namespace
+
+Model::Model(Fabric fabric_, TensionTable warp_, TensionTable weft_, std::vector<AxisMask> locks_,
+             std::vector<RigidBody> bodies_, std::vector<Eigen::Vector3d> start_)
+    : fabric(std::move(fabric_)),
+      warp(std::move(warp_)),
+      weft(std::move(weft_)),
+      locks(std::move(locks_)),
+      bodies(std::move(bodies_)),
+      start(std::move(start_)) {
+  terms.push_back(std::make_shared<SpringTerm>(SpringTerm::Role::stretch));
+  if (has_springs(fabric, SpringKind::shear)) terms.push_back(std::make_shared<SpringTerm>(SpringTerm::Role::shear));
+  if (has_springs(fabric, SpringKind::bend)) terms.push_back(std::make_shared<SpringTerm>(SpringTerm::Role::bend));
+}
+
+std::vector<std::string> Model::modelled() const {
+  std::vector<std::string> lines;
+  for (const auto& term : terms) lines.push_back(term->describe(*this));
+  return lines;
+}
+
+bool Model::loaded() const {
+  return std::any_of(terms.begin(), terms.end(), [](const auto& t) { return t->external(); });
+}
+
+bool Model::resists_bending() const {
+  return std::any_of(terms.begin(), terms.end(), [](const auto& t) { return t->resists_bending(); });
+}
+
+Eigen::Vector3d node_force_at(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  for (const auto& term : model.terms) force += term->force_at(model, x, node, at);
+  return force;
+}
+
+}  // namespace fabform

@@ -1,0 +1,138 @@
+#include "fabform/model/spring_term.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdio>
+
+#include "fabform/fabric/spring.hpp"
+#include "fabform/model/model.hpp"
+#include "fabform/model/spring_energy.hpp"
+#include "fabform/thread_count.hpp"
+
+namespace fabform {
+namespace {
+
+// The steepest segment of a table (N/m per unit strain); the slack range of a tension-only
+// table has slope 0, and the extended end segments keep their slopes.
+double steepest_slope(const TensionTable& table) {
+  double steepest = 0.0;
+  const auto& p = table.points();
+  for (std::size_t i = 1; i < p.size(); ++i)
+    steepest = std::max(steepest, (p[i].tension_N_per_m - p[i - 1].tension_N_per_m) /
+                                      (p[i].strain - p[i - 1].strain));
+  return steepest;
+}
+
+const Eigen::Vector3d& at_index(const Positions& x, int node) { return x[static_cast<std::size_t>(node)]; }
+
+}  // namespace
+
+bool SpringTerm::covers(SpringKind kind) const {
+  switch (role_) {
+    case Role::stretch: return kind == SpringKind::warp || kind == SpringKind::weft;
+    case Role::shear: return kind == SpringKind::shear;
+    case Role::bend: return kind == SpringKind::bend;
+  }
+  return false;
+}
+
+std::string SpringTerm::describe(const Model& model) const {
+  const Fabric& fabric = model.fabric;
+  switch (role_) {
+    case Role::stretch: {
+      const std::string outline = fabric.spec().shape == FabricSpec::Shape::rectangle
+                                      ? "rectangle"
+                                      : "circle meshed " + std::string(to_string(fabric.spec().mesh));
+      return "stretch: warp and weft springs of a " + outline + " of " + std::to_string(fabric.node_count()) +
+             " nodes, tension-only piecewise-linear tables";
+    }
+    case Role::shear:
+      return "shear: diagonal springs (rest length the cell's diagonal) following " + model.table(SpringKind::shear).name();
+    case Role::bend: {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "bending: skip-one bend springs, linear in tension and compression, %.6g N/m per width",
+                    model.table(SpringKind::bend).tension(1.0));
+      return text;
+    }
+  }
+  return "";
+}
+
+Eigen::Vector3d SpringTerm::force_at(const Model& model, const Positions& x, int node,
+                                     const Eigen::Vector3d& at) const {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  for (const int s : model.fabric.springs_at(node)) {
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
+    if (!covers(spring.kind)) continue;
+    const int other = spring.a == node ? spring.b : spring.a;
+    force += spring_force_on_a(at, at_index(x, other), spring, model.table(spring.kind));
+  }
+  return force;
+}
+
+double SpringTerm::energy(const Model& model, const Positions& x) const {
+  const std::vector<Spring>& springs = model.fabric.springs();
+  const auto count = static_cast<std::ptrdiff_t>(springs.size());
+  // Each spring's energy in parallel, summed in spring order: the same bits for any thread
+  // count, so a line search decides alike on 1 or 2 threads (a reduction's order would not).
+  std::vector<double> energies(springs.size(), 0.0);
+#pragma omp parallel for schedule(static) if (count >= kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    const Spring& spring = springs[static_cast<std::size_t>(i)];
+    if (covers(spring.kind))
+      energies[static_cast<std::size_t>(i)] =
+          spring_energy(at_index(x, spring.a), at_index(x, spring.b), spring, model.table(spring.kind));
+  }
+  double energy = 0.0;
+  for (const double e : energies) energy += e;
+  return energy;
+}
+
+double SpringTerm::node_energy(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const {
+  double energy = 0.0;
+  for (const int s : model.fabric.springs_at(node)) {
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
+    if (!covers(spring.kind)) continue;
+    const TensionTable& table = model.table(spring.kind);
+    energy += spring.a == node ? spring_energy(at, at_index(x, spring.b), spring, table)
+                               : spring_energy(at_index(x, spring.a), at, spring, table);
+  }
+  return energy;
+}
+
+double SpringTerm::node_energy_change(const Model& model, const Positions& x, int node,
+                                      const Eigen::Vector3d& at) const {
+  return node_energy(model, x, node, at) - node_energy(model, x, node, at_index(x, node));
+}
+
+void SpringTerm::add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const {
+  const std::vector<Spring>& springs = model.fabric.springs();
+  std::vector<Eigen::Matrix3d> stiffness(springs.size());
+#pragma omp parallel for schedule(static) if (springs.size() >= kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(springs.size()); ++i) {
+    const Spring& s = springs[static_cast<std::size_t>(i)];
+    if (covers(s.kind))
+      stiffness[static_cast<std::size_t>(i)] =
+          projected_spring_stiffness(at_index(x, s.a), at_index(x, s.b), s, model.table(s.kind));
+  }
+  // A spring between a and b adds [[K, −K], [−K, K]].
+  for (std::size_t i = 0; i < springs.size(); ++i) {
+    if (!covers(springs[i].kind)) continue;
+    sink.add(springs[i].a, springs[i].a, stiffness[i]);
+    sink.add(springs[i].b, springs[i].b, stiffness[i]);
+    sink.add(springs[i].b, springs[i].a, -stiffness[i]);
+  }
+}
+
+void SpringTerm::bound_stiffness(const Model& model, StiffnessBound& bound) const {
+  for (const Spring& s : model.fabric.springs()) {
+    if (!covers(s.kind)) continue;
+    const double k = s.width * steepest_slope(model.table(s.kind)) / s.rest_length;
+    bound.per_node[static_cast<std::size_t>(s.a)] += k;
+    bound.per_node[static_cast<std::size_t>(s.b)] += k;
+    bound.stiffest_element = std::max(bound.stiffest_element, k);
+  }
+}
+
+}  // namespace fabform
