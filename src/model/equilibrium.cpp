@@ -4,7 +4,7 @@
 #include <limits>
 #include <optional>
 
-#include "fabform/model/spring_strains.hpp"
+#include "fabform/model/model.hpp"
 
 namespace fabform {
 

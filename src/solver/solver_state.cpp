@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "fabform/model/equilibrium.hpp"
-#include "fabform/model/spring_strains.hpp"
+#include "fabform/model/model.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {

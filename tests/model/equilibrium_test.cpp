@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fabform/model/spring_strains.hpp"
+#include "fabform/model/model.hpp"
 #include "support/shapes.hpp"
 
 namespace fabform {

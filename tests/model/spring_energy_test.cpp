@@ -11,7 +11,7 @@
 #include <random>
 
 #include "fabform/material/material_csv.hpp"
-#include "fabform/model/spring_strains.hpp"
+#include "fabform/model/model.hpp"
 #include "test_paths.hpp"
 
 namespace fabform {

@@ -7,7 +7,7 @@
 
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/potential_energy.hpp"
-#include "fabform/model/spring_strains.hpp"
+#include "fabform/model/model.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
 #include "fabform/solver/solve.hpp"

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "fabform/model/equilibrium.hpp"
-#include "fabform/model/spring_strains.hpp"
+#include "fabform/model/model.hpp"
 #include "fabform/solver/relax.hpp"
 #include "support/clamped_fabric.hpp"
 #include "support/fabric_over_sphere.hpp"
