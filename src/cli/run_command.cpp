@@ -172,7 +172,7 @@ int run(const RunArguments& args) {
   for (const auto& term : model.terms)
     if (std::string w = term->tolerance_warning(scene.solver.tolerance_N()); !w.empty()) of_model.push_back(std::move(w));
   const auto publish = [&](const SolverState& s, const Summary& summary) {
-    const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m);
+    const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m, scene.solver.tolerance_N());
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     write_results(dir, RunRecord{scene, model, s, summary, check, inputs,
                                  collect_warnings(model, s, check, 1e-6, of_model), wall, scene.solver.threads});

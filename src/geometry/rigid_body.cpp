@@ -70,8 +70,10 @@ EdgeBuckets bucket_edges(const std::vector<std::array<int, 3>>& triangles, std::
 
 }  // namespace
 
-RigidBody::RigidBody(std::string name, TriangleMesh mesh)
-    : name_(std::move(name)), mesh_(std::move(mesh)) {
+RigidBody::RigidBody(std::string name, TriangleMesh mesh, double friction)
+    : name_(std::move(name)), mesh_(std::move(mesh)), friction_(friction) {
+  if (!(friction >= 0.0 && std::isfinite(friction)))
+    throw std::invalid_argument("friction coefficient must be finite and not negative");
   validate(mesh_);
   box_ = bounding_box(mesh_.vertices);
   // The BVH and the pseudo-normals need only the mesh: build them side by side (a large

@@ -9,7 +9,7 @@
 namespace fabform {
 
 Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
-                                 const Eigen::Vector3d* contact_normal) {
+                                 const Eigen::Vector3d* contact_normal, double friction) {
   const Eigen::Vector3d free = remove_locked(resultant, locks);
   if (!contact_normal || free.dot(*contact_normal) >= 0.0) return free;
   // Pressing on the body, the node may move only along free axes that keep it on the tangent
@@ -17,33 +17,49 @@ Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask lock
   const Eigen::Vector3d normal_free = remove_locked(*contact_normal, locks);
   const double length2 = normal_free.squaredNorm();
   if (length2 == 0.0) return free;
-  return free - (free.dot(normal_free) / length2) * normal_free;
+  const Eigen::Vector3d tangential = free - (free.dot(normal_free) / length2) * normal_free;
+  if (friction == 0.0) return tangential;
+  // The locks' reactions carry what of R they take; the body carries the rest of its normal part.
+  const double held = friction * -free.dot(*contact_normal);
+  const double length = tangential.norm();
+  return length <= held ? Eigen::Vector3d::Zero() : Eigen::Vector3d((1.0 - held / length) * tangential);
 }
 
 namespace {
 
 struct NearestSurface {
   SurfacePoint point;
-  bool found = false;
+  int body = -1;  // -1: the model has no body
 };
 
 NearestSurface nearest_surface(const Model& model, const Eigen::Vector3d& p) {
   NearestSurface nearest;
-  for (const RigidBody& body : model.bodies) {
-    const SurfacePoint s = body.closest(p);
-    if (!nearest.found || s.distance < nearest.point.distance) nearest = {s, true};
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const SurfacePoint s = model.bodies[b].closest(p);
+    if (nearest.body < 0 || s.distance < nearest.point.distance) nearest = {s, static_cast<int>(b)};
   }
   return nearest;
+}
+
+// A node on a body is stuck when friction could hold a force larger by more than e than the
+// one it holds; frictionless, it is never stuck.
+bool stuck(const Eigen::Vector3d& r, AxisMask locks, const Eigen::Vector3d& normal, double friction,
+           double tolerance_N) {
+  if (friction == 0.0) return false;
+  const Eigen::Vector3d free = remove_locked(r, locks);
+  const double held = friction * -free.dot(normal);
+  return unbalanced_force(r, locks, &normal).norm() < held - tolerance_N;
 }
 
 }  // namespace
 
 EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eigen::Vector3d>& x,
-                                      double contact_tolerance_m) {
+                                      double contact_tolerance_m, double tolerance_N) {
   const auto n = static_cast<std::size_t>(model.node_count());
   EquilibriumReport report;
   report.residual_N.assign(n, 0.0);
   report.contact.assign(n, 0);
+  report.sliding.assign(n, 0);
   for (std::size_t k = 0; k < n; ++k) {
     if (!x[k].allFinite()) {  // no geometry query on a broken state: report it and stop
       report.max_residual_N = std::numeric_limits<double>::quiet_NaN();
@@ -51,14 +67,20 @@ EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eige
       return report;
     }
     const NearestSurface nearest = nearest_surface(model, x[k]);
-    const bool touching = nearest.found && nearest.point.distance <= contact_tolerance_m;
-    if (nearest.found)
+    const bool touching = nearest.body >= 0 && nearest.point.distance <= contact_tolerance_m;
+    if (nearest.body >= 0)
       report.max_penetration_m = std::max(report.max_penetration_m, -nearest.point.signed_distance);
     const Eigen::Vector3d r = node_force(model, x, static_cast<int>(k));
+    const double friction = touching ? model.bodies[static_cast<std::size_t>(nearest.body)].friction() : 0.0;
     report.residual_N[k] =
-        unbalanced_force(r, model.locks[k], touching ? &nearest.point.normal : nullptr).norm();
+        unbalanced_force(r, model.locks[k], touching ? &nearest.point.normal : nullptr, friction).norm();
     report.contact[k] = touching ? 1 : 0;
     report.contact_nodes += touching ? 1 : 0;
+    if (touching) {
+      const bool holds = stuck(r, model.locks[k], nearest.point.normal, friction, tolerance_N);
+      report.sliding[k] = holds ? 0 : 1;
+      (holds ? report.stuck_nodes : report.sliding_nodes) += 1;
+    }
     if (report.residual_N[k] > report.max_residual_N || report.worst_node < 0) {
       report.max_residual_N = report.residual_N[k];
       report.worst_node = static_cast<int>(k);

@@ -1,6 +1,7 @@
 #include "fabform/model/model.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <utility>
 
@@ -32,6 +33,13 @@ Model::Model(Fabric fabric_, TensionTable warp_, TensionTable weft_, std::vector
 std::vector<std::string> Model::modelled() const {
   std::vector<std::string> lines;
   for (const auto& term : terms) lines.push_back(term->describe(*this));
+  for (const RigidBody& body : bodies)
+    if (body.friction() > 0.0) {
+      char text[200];
+      std::snprintf(text, sizeof text, "friction: Coulomb, mu = %.6g on body '%s' (stick and slip)", body.friction(),
+                    body.name().c_str());
+      lines.push_back(text);
+    }
   return lines;
 }
 
@@ -41,6 +49,10 @@ bool Model::loaded() const {
 
 bool Model::resists_bending() const {
   return std::any_of(terms.begin(), terms.end(), [](const auto& t) { return t->resists_bending(); });
+}
+
+bool Model::has_friction() const {
+  return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.friction() > 0.0; });
 }
 
 Eigen::Vector3d node_force_at(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) {

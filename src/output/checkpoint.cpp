@@ -11,7 +11,7 @@
 namespace fabform {
 namespace {
 
-constexpr char kMagic[] = "fabform checkpoint 1\n";
+constexpr char kMagic[] = "fabform checkpoint 2\n";
 constexpr std::uint32_t kByteOrder = 0x01020304;
 
 // FNV-1a: enough to tell a damaged or truncated file from a whole one.
@@ -97,7 +97,7 @@ class Reader {
   std::size_t end_ = 0;
 };
 
-constexpr std::size_t kNodeBytes = 6 * sizeof(double) + sizeof(std::int32_t);
+constexpr std::size_t kNodeBytes = 9 * sizeof(double) + sizeof(std::int32_t);
 constexpr std::size_t kVelocityBytes = 3 * sizeof(double);
 constexpr std::size_t kRecordBytes = 2 * sizeof(std::int64_t) + 2 * sizeof(double);
 
@@ -107,6 +107,7 @@ void put_state(Writer& out, const SolverState& s) {
     out.put_vector3(s.x[i]);
     out.put(static_cast<std::int32_t>(s.contact[i].body));
     out.put_vector3(s.contact[i].normal);
+    out.put_vector3(s.contact[i].anchor);
   }
   out.put(static_cast<std::uint64_t>(s.velocity.size()));
   for (const Eigen::Vector3d& v : s.velocity) out.put_vector3(v);
@@ -142,6 +143,7 @@ SolverState get_state(Reader& in, int node_count, int body_count) {
     s.x[i] = in.get_vector3();
     s.contact[i].body = in.get<std::int32_t>();
     s.contact[i].normal = in.get_vector3();
+    s.contact[i].anchor = in.get_vector3();
     if (s.contact[i].body < -1 || s.contact[i].body >= body_count)
       in.fail("node " + std::to_string(i) + " rests on body " + std::to_string(s.contact[i].body) +
               "; the scene has " + std::to_string(body_count));

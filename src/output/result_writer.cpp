@@ -109,6 +109,8 @@ std::string result_json(const RunRecord& run) {
   j["contact_nodes"] = run.check.contact_nodes;
   j["max_penetration_m"] = number(run.check.max_penetration_m);
   j["figures"] = figures_json(fabric_figures(run.model, run.state.x, run.check.contact));
+  j["figures"]["sliding_nodes"] = run.check.sliding_nodes;
+  j["figures"]["stuck_nodes"] = run.check.stuck_nodes;
   j["fabric"] = fabric_json(run.model.fabric);
   if (run.scene.drape.on) {
     j["drape"] = drape_json(run);

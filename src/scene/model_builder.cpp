@@ -79,7 +79,7 @@ RigidBody build_body(const BodySpec& spec) {
   if (!within_range(mesh.vertices))
     throw InputError(spec.where, "the placed mesh reaches beyond 1e6 m: check units, scale and translation");
   try {
-    return RigidBody(spec.name, std::move(mesh));
+    return RigidBody(spec.name, std::move(mesh), spec.friction);
   } catch (const std::invalid_argument& error) {
     throw InputError({spec.mesh_path, 0, ""}, error.what());
   }

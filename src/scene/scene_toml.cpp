@@ -211,9 +211,13 @@ BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t ind
   body.placement.scale = r.number("scale", 1.0);
   body.placement.rotation_deg = angles<3>(r, "rotation_deg");
   body.placement.translation_m = r.vector<3>("translation_m", Eigen::Vector3d::Zero());
+  body.friction = r.number("friction", 0.0);
+  body.friction_where = r.locate_key("friction");
+  if (!(body.friction >= 0.0 && body.friction <= 10.0))
+    r.fail("friction", "Coulomb's coefficient must be in [0, 10] (0: frictionless)");
   std::string field;
   if (const std::string why = body.placement.invalid_reason(&field); !why.empty()) r.fail(field, why);
-  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m"});
+  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m", "friction"});
   return body;
 }
 
@@ -334,6 +338,7 @@ void read_solver(TableReader r, Scene* scene) {
   s.newton.armijo = r.number("armijo", s.newton.armijo);
   s.newton.max_backtracks = checked_int(
       r, "max_backtracks", r.integer("max_backtracks", s.newton.max_backtracks), 1, 200);
+  s.newton.friction_creep = r.number("friction_creep", s.newton.friction_creep);
   s.dynamic.areal_density_kg_m2 = r.number("areal_density_kg_m2", s.dynamic.areal_density_kg_m2);
   if (r.has("damping")) s.dynamic.damping = r.number("damping", 0.0);
   s.dynamic.time_step_fraction = r.number("time_step_fraction", s.dynamic.time_step_fraction);
@@ -345,7 +350,7 @@ void read_solver(TableReader r, Scene* scene) {
   if (const std::string why = s.dynamic.invalid_reason(&field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"name", "tolerance_N", "max_iterations", "C", "regularization", "armijo",
                     "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
-                    "stretch_limit", "threads"});
+                    "stretch_limit", "threads", "friction_creep"});
 }
 
 void read_gravity(TableReader r, Scene* scene) {
@@ -425,6 +430,19 @@ std::string key_on_line(std::string_view text, int line_number) {
   return "";
 }
 
+// Seed 003's relaxation moves a node along its unbalanced force, which a stuck node has whatever
+// its history; friction needs the slip from where the node landed, which only newton and
+// dynamic carry.
+void refuse_friction_in_relax(const Scene& scene, TableReader& solver) {
+  if (scene.solver.name != "relax") return;
+  for (const BodySpec& body : scene.bodies)
+    if (body.friction > 0.0)
+      solver.fail("name", "body '" + body.name + "' has friction (" +
+                              (body.friction_where.line > 0 ? "line " + std::to_string(body.friction_where.line)
+                                                            : std::string("from the command line")) +
+                              "), which relax cannot carry (seed 003's rule has no stick or slip): use newton or dynamic");
+}
+
 Scene read_scene(const toml::table& root, const std::string& path,
                  const OverriddenKeys& overridden) {
   Scene scene;
@@ -456,6 +474,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
                                                        : std::string("from the command line")) +
                             "), which depends on the fabric's velocity (seed 004): only solver dynamic models it, not " +
                             scene.solver.name);
+  refuse_friction_in_relax(scene, solver);
   read_output(r.table("output", false), &scene);
   r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "drape",
                     "initial", "solver", "output"});

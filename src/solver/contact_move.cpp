@@ -8,11 +8,11 @@ namespace {
 
 // A contact node moved on the tangent plane is projected back onto the surface (Fig. 8).
 // The node was on the surface, so the surface is within the step's length of `to`.
-NodeMove slide(const Model& model, const Eigen::Vector3d& to, double step_length, int body) {
-  const RigidBody& surface = model.bodies[static_cast<std::size_t>(body)];
+NodeMove slide(const Model& model, const Eigen::Vector3d& to, double step_length, const NodeContact& contact) {
+  const RigidBody& surface = model.bodies[static_cast<std::size_t>(contact.body)];
   const auto s = surface.closest_within(to, 2.0 * step_length + 1e-6 * surface.box().diagonal());
   const SurfacePoint projected = s ? *s : surface.closest(to);
-  return {projected.point, NodeContact{body, projected.normal}};
+  return {projected.point, NodeContact{contact.body, projected.normal, contact.anchor}};
 }
 
 // Entry points are snapped onto their triangle, which can move them by a rounding error;
@@ -34,7 +34,7 @@ NodeMove slide_locked(const Model& model, const Eigen::Vector3d& from, const Eig
   const RigidBody& body = model.bodies[static_cast<std::size_t>(contact.body)];
   const auto s = body.first_entry(to + reach * along, to - reach * along);
   if (!s) return {to, NodeContact{}};
-  return {keep_locked(s->point, to, locks), NodeContact{contact.body, s->normal}};
+  return {keep_locked(s->point, to, locks), NodeContact{contact.body, s->normal, contact.anchor}};
 }
 
 // Embree's single-precision rays can slip through a shared edge (by ~1e-7 of the body's
@@ -63,7 +63,8 @@ NodeMove fly(const Model& model, const Eigen::Vector3d& from, const Eigen::Vecto
     const auto entry = entry_point(model.bodies[b], from, to, locks);
     if (entry && (entry->point - from).norm() < nearest) {
       nearest = (entry->point - from).norm();
-      result = {keep_locked(entry->point, to, locks), NodeContact{static_cast<int>(b), entry->normal}};
+      const Eigen::Vector3d landed = keep_locked(entry->point, to, locks);
+      result = {landed, NodeContact{static_cast<int>(b), entry->normal, landed}};
     }
   }
   return result;
@@ -76,7 +77,7 @@ NodeMove move_node(const Model& model, int node, const Eigen::Vector3d& from,
   const AxisMask locks = model.locks[static_cast<std::size_t>(node)];
   const Eigen::Vector3d to = from + remove_locked(step, locks);
   if (!contact.active()) return fly(model, from, to, locks);
-  if (locks == 0) return slide(model, to, (to - from).norm(), contact.body);
+  if (locks == 0) return slide(model, to, (to - from).norm(), contact);
   return slide_locked(model, from, to, contact, locks);
 }
 

@@ -11,6 +11,7 @@
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "solver/free_directions.hpp"
+#include "solver/lagged_friction.hpp"
 #include "solver/reduced_hessian.hpp"
 #include "solver/sparse_cholesky.hpp"
 #include "fabform/thread_count.hpp"
@@ -30,6 +31,7 @@ std::string NewtonOptions::invalid_reason(std::string* field) const {
   if (!(armijo > 0.0 && armijo < 0.5)) return bad("armijo", "must be in (0, 0.5)");
   if (!(max_backtracks >= 1 && max_backtracks <= 200))
     return bad("max_backtracks", "must be between 1 and 200");
+  if (!(friction_creep > 0.0 && friction_creep <= 0.1)) return bad("friction_creep", "must be in (0, 0.1]");
   return "";
 }
 
@@ -56,6 +58,15 @@ void release_pulling_nodes(const Model& model, const std::vector<Eigen::Vector3d
   }
 }
 
+// R with the friction lagged for this iteration added where a body holds a node.
+std::vector<Eigen::Vector3d> with_friction(const Model& model, std::vector<Eigen::Vector3d> forces,
+                                           const LaggedFriction& friction, const std::vector<Eigen::Vector3d>& x) {
+  if (friction.empty()) return forces;
+  for (int k = 0; k < model.node_count(); ++k)
+    forces[static_cast<std::size_t>(k)] += friction.force_at(model, x, k, x[static_cast<std::size_t>(k)]);
+  return forces;
+}
+
 // ∇Π·Δx = −Σ R_k·Δx_k: the energy change a move predicts to first order.
 double first_order_change(const std::vector<Eigen::Vector3d>& forces,
                           const std::vector<Eigen::Vector3d>& from,
@@ -71,19 +82,22 @@ class NewtonStep {
       : model_(model),
         state_(state),
         options_(options),
+        creep_m_(model.has_friction() ? friction_creep_m(model, options.friction_creep) : 0.0),
         mu_(state.regularization > 0.0 ? state.regularization : options.regularization) {}
 
   /// One Newton step from the current state, whose ‖V‖∞ is `residual`; false when no step along
   /// the Newton direction is acceptable (the state is then unchanged).
   bool take(double residual) {
-    const std::vector<Eigen::Vector3d> forces = node_forces(model_, state_.x);
-    release_pulling_nodes(model_, forces, state_);
+    const std::vector<Eigen::Vector3d> stored = node_forces(model_, state_.x);
+    release_pulling_nodes(model_, stored, state_);
+    const LaggedFriction friction = lag_friction(model_, state_, stored, creep_m_);
+    const std::vector<Eigen::Vector3d> forces = with_friction(model_, stored, friction, state_.x);
     const FreeDirections directions = free_directions(model_, state_.contact);
     if (directions.used == 0) return false;
-    const auto step = solve(reduced_hessian(model_, state_.x, directions),
+    const auto step = solve(reduced_hessian(model_, state_.x, directions, friction.empty() ? nullptr : &friction),
                             reduced_forces(directions, forces), directions.used);
     if (!step) return false;
-    const auto alpha = line_search(node_steps(directions, *step), forces, residual);
+    const auto alpha = line_search(node_steps(directions, *step), forces, friction, residual);
     if (!alpha) return false;
     // Levenberg–Marquardt-like: a full step earns less regularisation, a short one more.
     if (*alpha == 1.0) mu_ = std::max(mu_ / 10.0, options_.regularization);
@@ -126,14 +140,17 @@ class NewtonStep {
   // Backtracking from the full step. Near the solution the energy's change falls below its
   // rounding (~1e-11 of the total); there a step is judged by whether it lowers ‖V‖∞ instead.
   std::optional<double> line_search(const std::vector<Eigen::Vector3d>& steps,
-                                    const std::vector<Eigen::Vector3d>& forces, double residual) {
+                                    const std::vector<Eigen::Vector3d>& forces, const LaggedFriction& friction,
+                                    double residual) {
     // Π's change, each term's its own way; the energy the fabric stores sets its rounding.
     const EnergyBaseline baseline = energy_baseline(model_, state_.x);
     const double noise = 1e-11 * std::abs(baseline.stored);
+    const double friction_before = friction.empty() ? 0.0 : friction.energy(model_, state_.x);
     double alpha = 1.0;
     for (int t = 0; t <= options_.max_backtracks; ++t, alpha *= 0.5) {
       SolverState trial = moved(steps, alpha);
-      const double change = energy_change(model_, state_.x, baseline, trial.x);
+      const double change = energy_change(model_, state_.x, baseline, trial.x) +
+                            (friction.empty() ? 0.0 : friction.energy(model_, trial.x) - friction_before);
       const double predicted = first_order_change(forces, state_.x, trial.x);
       const bool decreases = change < 0.0 && change <= options_.armijo * std::min(predicted, 0.0);
       if (decreases || (std::abs(change) <= noise &&
@@ -148,6 +165,7 @@ class NewtonStep {
   const Model& model_;
   SolverState& state_;
   const NewtonOptions& options_;
+  double creep_m_;  // friction's creep length ε (0 without friction)
   double mu_;  // current regularisation, relative to the mean diagonal
   SparseCholesky cholesky_;
 };

@@ -37,12 +37,13 @@ class ReducedAssembly final : public StiffnessSink {
 
 Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
                                             const std::vector<Eigen::Vector3d>& x,
-                                            const FreeDirections& directions) {
+                                            const FreeDirections& directions, const Term* lagged) {
   Triplets triplets;
   triplets.reserve(model.fabric.springs().size() * 21 + static_cast<std::size_t>(directions.unknowns()));
   for (int u = 0; u < directions.unknowns(); ++u) triplets.emplace_back(u, u, 0.0);
   ReducedAssembly assembly(directions, &triplets);
   for (const auto& term : model.terms) term->add_stiffness(model, x, assembly);
+  if (lagged) lagged->add_stiffness(model, x, assembly);
   Eigen::SparseMatrix<double> hessian(directions.unknowns(), directions.unknowns());
   hessian.setFromTriplets(triplets.begin(), triplets.end());
   return hessian;

@@ -12,9 +12,11 @@
 namespace fabform {
 
 /// Lower triangle only (what Eigen's SimplicialLDLT reads); every diagonal entry is stored,
-/// so a regularisation can be added to it in place.
+/// so a regularisation can be added to it in place. `lagged` is a term Newton holds for one
+/// iteration (friction), added to the model's own.
 Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
                                             const std::vector<Eigen::Vector3d>& x,
-                                            const FreeDirections& directions);
+                                            const FreeDirections& directions,
+                                            const Term* lagged = nullptr);
 
 }  // namespace fabform

@@ -123,6 +123,8 @@ Summary relax(const Model& model, SolverState& state, const RelaxOptions& option
               const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("relax: " + why);
+  if (model.has_friction())
+    throw std::invalid_argument("relax: seed 003's rule has no stick or slip; friction needs newton or dynamic");
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Relaxation relaxation(model, state, options);

@@ -15,11 +15,15 @@ SolverState SolverState::at_start(const Model& model) {
   return state;
 }
 
+double contact_friction(const Model& model, const NodeContact& contact) {
+  return contact.active() ? model.bodies[static_cast<std::size_t>(contact.body)].friction() : 0.0;
+}
+
 double node_residual(const Model& model, const SolverState& state, int node,
                      const Eigen::Vector3d& at, const NodeContact& contact) {
   const Eigen::Vector3d r = node_force_at(model, state.x, node, at);
   return unbalanced_force(r, model.locks[static_cast<std::size_t>(node)],
-                          contact.active() ? &contact.normal : nullptr)
+                          contact.active() ? &contact.normal : nullptr, contact_friction(model, contact))
       .norm();
 }
 
@@ -59,7 +63,9 @@ StateResidual measure_state(const Model& model, const SolverState& state,
   std::vector<double> residual(state.x.size());
   for (std::size_t i = 0; i < residual.size(); ++i) {
     const NodeContact& contact = state.contact[i];
-    residual[i] = unbalanced_force(forces[i], model.locks[i], contact.active() ? &contact.normal : nullptr).norm();
+    residual[i] = unbalanced_force(forces[i], model.locks[i], contact.active() ? &contact.normal : nullptr,
+                                   contact_friction(model, contact))
+                      .norm();
   }
   return worst_of(state, residual);
 }

@@ -25,6 +25,27 @@ TEST(UnbalancedForce, ContactPressingInLeavesTheTangentialPart) {
   EXPECT_EQ(unbalanced_force({0.5, 0.25, -4.0}, 0, &n), Eigen::Vector3d(0.5, 0.25, 0.0));
 }
 
+// Coulomb: the body holds up to μ·λ of the tangential part, λ = 4 N here; beyond, the excess
+// is left, along the tangential part.
+TEST(UnbalancedForce, FrictionHoldsTheTangentialPartWithinItsCone) {
+  const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+  EXPECT_EQ(unbalanced_force({0.6, 0.8, -4.0}, 0, &n, 0.25), Eigen::Vector3d::Zero());  // |R*| = 1 = μλ
+  EXPECT_EQ(unbalanced_force({0.6, 0.8, -4.0}, 0, &n, 0.3), Eigen::Vector3d::Zero());
+  const Eigen::Vector3d v = unbalanced_force({0.6, 0.8, -4.0}, 0, &n, 0.2);  // holds 0.8 of 1
+  EXPECT_NEAR(v.x(), 0.2 * 0.6, 1e-15);
+  EXPECT_NEAR(v.y(), 0.2 * 0.8, 1e-15);
+  EXPECT_EQ(v.z(), 0.0);
+  // Pulled off the body, friction holds nothing.
+  EXPECT_EQ(unbalanced_force({0.6, 0.8, 4.0}, 0, &n, 0.3), Eigen::Vector3d(0.6, 0.8, 4.0));
+}
+
+// A lock's reaction takes R's part along its axis, so only the free part of R presses on the
+// body: held in z on a horizontal body, nothing presses and nothing is held by friction.
+TEST(UnbalancedForce, FrictionPressesOnlyWithTheFreePartOfR) {
+  const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+  EXPECT_EQ(unbalanced_force({0.6, 0.8, -4.0}, kLockZ, &n, 0.3), Eigen::Vector3d(0.6, 0.8, 0.0));
+}
+
 TEST(UnbalancedForce, ContactPullingOutKeepsAllOfR) {
   const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
   EXPECT_EQ(unbalanced_force({0.5, 0.25, 4.0}, 0, &n), Eigen::Vector3d(0.5, 0.25, 4.0));

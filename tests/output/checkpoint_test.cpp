@@ -65,6 +65,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
       EXPECT_EQ(std::memcmp(c.state.x[i].data(), state.x[i].data(), sizeof(double) * 3), 0);
       EXPECT_EQ(c.state.contact[i].body, state.contact[i].body);
       EXPECT_EQ(c.state.contact[i].normal, state.contact[i].normal);
+      EXPECT_EQ(c.state.contact[i].anchor, state.contact[i].anchor);
     }
     EXPECT_EQ(c.state.velocity, state.velocity);
     EXPECT_EQ(c.state.regularization, state.regularization);

@@ -30,8 +30,9 @@ struct SurfacePoint {
 
 class RigidBody {
  public:
-  /// Throws std::invalid_argument for a mesh with no usable triangle or a bad index.
-  RigidBody(std::string name, TriangleMesh mesh);
+  /// Throws std::invalid_argument for a mesh with no usable triangle or a bad index, or a
+  /// friction coefficient that is negative or not finite.
+  RigidBody(std::string name, TriangleMesh mesh, double friction = 0.0);
   ~RigidBody();
   RigidBody(RigidBody&&) noexcept;
   RigidBody& operator=(RigidBody&&) noexcept;
@@ -50,6 +51,8 @@ class RigidBody {
   bool segment_crosses(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
 
   const std::string& name() const { return name_; }
+  /// Coulomb's μ between the fabric and this body's surface (0: frictionless).
+  double friction() const { return friction_; }
   const TriangleMesh& mesh() const { return mesh_; }
   const BoundingBox& box() const { return box_; }
   /// Volume enclosed, positive when the faces are oriented outward (meaningful when closed).
@@ -67,6 +70,7 @@ class RigidBody {
 
   std::string name_;
   TriangleMesh mesh_;
+  double friction_;
   BoundingBox box_;
   std::vector<Eigen::Vector3d> face_normals_;
   std::vector<std::array<Eigen::Vector3d, 3>> edge_normals_;  // per triangle: 01, 12, 20

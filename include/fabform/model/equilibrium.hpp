@@ -13,21 +13,28 @@ namespace fabform {
 
 /// The unbalanced force at a node: R with locked axes removed, and for a node in contact
 /// (normal != nullptr) whose R presses into the body, its part R* along the directions the
-/// node may still move in: free axes within the tangent plane.
+/// node may still move in: free axes within the tangent plane. With Coulomb friction μ
+/// (`friction`), the body also holds up to μ·λ of R*, λ the force pressing the node on it
+/// (the free part of R along −n): what stays is R*'s excess over the friction cone, so a node
+/// inside the cone is balanced, stuck or not.
 Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
-                                 const Eigen::Vector3d* contact_normal);
+                                 const Eigen::Vector3d* contact_normal, double friction = 0.0);
 
 struct EquilibriumReport {
   std::vector<double> residual_N;      // V_k per node
   std::vector<unsigned char> contact;  // 1 where the node lies on a body
+  std::vector<unsigned char> sliding;  // 1 where a node on a body is at the friction cone's edge
   double max_residual_N = 0.0;         // ‖V‖∞
   int worst_node = -1;
   int contact_nodes = 0;
+  int sliding_nodes = 0;  // on a body, R* at μ·λ (within e): it slides or is about to; μ = 0 slides
+  int stuck_nodes = 0;    // on a body, R* inside the cone: friction holds it
   double max_penetration_m = 0.0;      // deepest node inside any body (0 when none is)
 };
 
-/// A node within `contact_tolerance_m` of a body's surface counts as in contact.
+/// A node within `contact_tolerance_m` of a body's surface counts as in contact; one whose R*
+/// falls short of μ·λ by more than `tolerance_N` is stuck.
 EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eigen::Vector3d>& x,
-                                      double contact_tolerance_m);
+                                      double contact_tolerance_m, double tolerance_N = 0.0);
 
 }  // namespace fabform

@@ -52,6 +52,8 @@ struct Model {
   bool loaded() const;
   /// Whether some term resists folding.
   bool resists_bending() const;
+  /// Whether some body holds the fabric by friction.
+  bool has_friction() const;
 };
 
 /// R at `node` with the node moved to `at` and every other node where `x` has it: the sum of

@@ -22,6 +22,8 @@ struct BodySpec {
   SourceLocation mesh_where;
   std::string units;  // as written: m, cm, mm or in
   Placement placement;
+  double friction = 0.0;  // Coulomb's μ between the fabric and this body; 0: frictionless
+  SourceLocation friction_where;
   SourceLocation where;
 };
 

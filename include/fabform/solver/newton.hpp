@@ -23,6 +23,10 @@ struct NewtonOptions {
   double regularization = 1e-8;
   double armijo = 1e-4;      // sufficient decrease: Π(x + Δx) ≤ Π(x) + armijo · ∇Π·Δx
   int max_backtracks = 60;   // step halvings before the line search is declared stalled
+  // Friction's creep length ε as a fraction of the mean spring length: a node that slipped
+  // less than ε from where it landed is stuck (friction smoothed as in incremental potential
+  // contact, lagged_friction.hpp).
+  double friction_creep = 1e-3;
 
   /// Why the options cannot be used, or "" when they can; `field` gets the option's name.
   std::string invalid_reason(std::string* field = nullptr) const;

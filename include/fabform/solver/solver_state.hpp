@@ -13,6 +13,8 @@ namespace fabform {
 struct NodeContact {
   int body = -1;  // index into Model::bodies; -1 when free
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  // Where the node came onto the body: friction resists the node's slip from here.
+  Eigen::Vector3d anchor = Eigen::Vector3d::Zero();
   bool active() const { return body >= 0; }
 };
 
@@ -26,6 +28,9 @@ struct SolverState {
 
   static SolverState at_start(const Model& model);
 };
+
+/// Coulomb's μ between the fabric and the body a node rests on (0 when it rests on none).
+double contact_friction(const Model& model, const NodeContact& contact);
 
 /// V_k of one node placed at `at` (the others where `state` has them), in `contact`.
 double node_residual(const Model& model, const SolverState& state, int node,
