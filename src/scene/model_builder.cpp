@@ -10,6 +10,7 @@
 #include "fabform/material/material_csv.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
+#include "fabform/model/pressure.hpp"
 #include "fabform/model/wind.hpp"
 
 namespace fabform {
@@ -178,6 +179,20 @@ void add_bending(const Scene& scene, Model* model) {
   }
 }
 
+// The pressure's potential is the follower load only where the fabric's edge cannot move
+// (pressure.hpp): a clamped blank.
+void add_pressure(const Scene& scene, Model* model) {
+  if (!scene.pressure.on) return;
+  for (int k = 0; k < model->node_count(); ++k)
+    if (model->fabric.on_perimeter(k) && model->locks[static_cast<std::size_t>(k)] != (kLockX | kLockY | kLockZ))
+      throw InputError(scene.pressure.where, "a pressure needs the fabric's edge held in x, y and z (a clamped blank): " +
+                                                 model->fabric.node_name(k) + " is not");
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : model->start) centre += p;
+  centre /= static_cast<double>(model->node_count());
+  model->terms.push_back(std::make_shared<PressureLoad>(model->fabric, scene.pressure.pressure_Pa, centre));
+}
+
 void add_wind(const Scene& scene, Model* model) {
   if (!scene.wind.on) return;
   model->terms.push_back(std::make_shared<WindLoad>(Wind{scene.wind.velocity_m_s, scene.wind.coefficient_N_s_m3}));
@@ -217,6 +232,7 @@ Model build_model(const Scene& scene) {
   add_bending(scene, &model);
   add_gravity(scene, warp, weft, &model);
   add_wind(scene, &model);
+  add_pressure(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);
   return model;

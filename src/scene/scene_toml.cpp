@@ -188,6 +188,17 @@ void read_wind(TableReader r, Scene* scene) {
   r.reject_unknown({"velocity_m_s", "coefficient_N_s_m3"});
 }
 
+void read_pressure(TableReader r, Scene* scene) {
+  PressureSpec& p = scene->pressure;
+  p.on = true;
+  p.where = r.where();
+  p.pressure_Pa = r.number("pressure_Pa", 0.0, true);
+  // 1e7 Pa is a hundred atmospheres: beyond, a unit mistake.
+  if (!(p.pressure_Pa != 0.0 && std::abs(p.pressure_Pa) <= 1e7))
+    r.fail("pressure_Pa", "must be non-zero and within ±1e7 Pa");
+  r.reject_unknown({"pressure_Pa"});
+}
+
 void read_drape(TableReader r, Scene* scene) {
   DrapeSpec& d = scene->drape;
   d.on = true;
@@ -461,6 +472,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
   if (r.has("shear")) read_shear(r.table("shear", false), &scene);
   if (r.has("bending")) read_bending(r.table("bending", false), &scene);
   if (r.has("wind")) read_wind(r.table("wind", false), &scene);
+  if (r.has("pressure")) read_pressure(r.table("pressure", false), &scene);
   if (r.has("drape")) read_drape(r.table("drape", false), &scene);
   if (scene.fabric.mesh == FabricSpec::Mesh::triangular && !scene.shear.on)
     fabric.fail("mesh", "a triangular mesh has diagonal springs: name their bias table in a [shear] table "
@@ -476,7 +488,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
                             scene.solver.name);
   refuse_friction_in_relax(scene, solver);
   read_output(r.table("output", false), &scene);
-  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "drape",
+  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "pressure", "drape",
                     "initial", "solver", "output"});
   return scene;
 }

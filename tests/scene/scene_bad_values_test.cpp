@@ -82,12 +82,14 @@ Section fabric_section(Base base) {
 }
 
 // The drape test's sections, in the circles' scenes: the dome is the support; the circle bends
-// with seed 004's bend springs, the arc mesh with hinges and is blown by seed 004's wind (its
+// with seed 004's bend springs under a pressure, the arc mesh with hinges and is blown by seed 004's wind (its
 // solver is dynamic, the only one that models wind).
 std::vector<Section> drape_sections(Base base) {
   if (base != Base::circle && base != Base::arc) return {};
   std::vector<Section> sections = {{"shear", "[shear]", {{"material", "\"../materials/synthetic/linear-500.csv\""}}}};
-  if (base == Base::circle) sections.push_back({"bending", "[bending]", {{"stiffness_N_m", "0.5"}}});
+  if (base == Base::circle)
+    sections.insert(sections.end(), {{"bending", "[bending]", {{"stiffness_N_m", "0.5"}}},
+                                     {"pressure", "[pressure]", {{"pressure_Pa", "100.0"}}}});
   else
     sections.insert(sections.end(), {{"bending", "[bending]", {{"rigidity_Nm", "5e-5"}}},
                                      {"wind", "[wind]", {{"velocity_m_s", "[1.0, 0.0, -0.5]"}, {"coefficient_N_s_m3", "0.5"}}}});
@@ -312,6 +314,12 @@ const std::vector<KeyRow>& key_table() {
       {"solver.name",                    T::only_extras, arc, _,  _,  _,   _,   _,    "",
        {{"newton_in_a_wind", "\"newton\"", R, kSame}, {"relax_in_a_wind", "\"relax\"", R, kSame},
         {"missing_in_a_wind", kRemove, R, kSame}}},
+      {"pressure",                       T::table,     circle, A, _,  _,   _,   _,    "", {}},
+      {"pressure.pressure_Pa",           T::number,    circle, R, A,  R,   R,   _,    "",
+       {{"cap", "1e7", A, kSame}, {"beyond_cap", "1.1e7", R, kSame}, {"suction", "-1e7", A, kSame}}},
+      // A pressure needs a clamped blank: its edge held in x, y and z.
+      {"constraint.0.axes",              T::only_extras, circle, _, _, _,  _,   _,    "",
+       {{"edge_free_under_pressure", "\"xy\"", B, "pressure"}}},
       {"drape",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
       // No support: a pin test, A_disc = 0.
       {"drape.support",                  T::text,      circle, A, _,  _,   _,   R,    "",

@@ -70,7 +70,8 @@ TEST(LoadScene, ReadsTheDynamicSolversKeys) {
 }
 
 TEST(LoadScene, ShippedScenesLoad) {
-  for (const char* file : {"scenes/mold.toml", "scenes/torso.toml", "scenes/torso_frictionless.toml"}) {
+  for (const char* file : {"scenes/mold.toml", "scenes/torso.toml", "scenes/torso_frictionless.toml",
+                           "scenes/vacuum.toml"}) {
     const Scene scene = load_scene(test::source_path(file));
     EXPECT_FALSE(scene.bodies.empty()) << file;
     EXPECT_FALSE(scene.constraints.empty()) << file;

@@ -124,7 +124,7 @@ TEST(FrictionIncline, NewtonRestsWhereItHoldsAndFindsNoRestWhereItSlides) {
     const Summary s = solve(slides.model, state, spec);
     EXPECT_NE(s.termination, Termination::converged);
     // The weight's pull beyond friction finds no rest on the plane: the strip has gone
-    // downhill by far more than friction's creep length (1e-3 of a 5 mm spring).
+    // downhill by far more than friction's creep length (1e-2 of a 5 mm spring).
     for (std::size_t k = 0; k < state.x.size(); ++k)
       EXPECT_GT((state.x[k] - slides.model.start[k]).dot(slides.downhill()), 1e-3) << k;
   }

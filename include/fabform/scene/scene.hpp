@@ -74,6 +74,14 @@ struct WindSpec {
   SourceLocation where;
 };
 
+// [pressure]: a uniform pressure on the fabric (vacuum forming), a follower load; positive
+// pushes against warp × weft (down, for a fabric laid face up). The fabric's edge must be held.
+struct PressureSpec {
+  bool on = false;
+  double pressure_Pa = 0.0;
+  SourceLocation where;
+};
+
 // [drape]: the scene is a drape test of a circular fabric; its result gives the drape
 // coefficient, with the named body as the support disc (none: over a pin, A_disc = 0).
 struct DrapeSpec {
@@ -100,6 +108,7 @@ struct Scene {
   ShearSpec shear;
   BendingSpec bending;
   WindSpec wind;
+  PressureSpec pressure;
   DrapeSpec drape;
   InitialShape initial;
   SourceLocation initial_where;

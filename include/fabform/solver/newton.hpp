@@ -26,7 +26,7 @@ struct NewtonOptions {
   // Friction's creep length ε as a fraction of the mean spring length: a node that slipped
   // less than ε from where it landed is stuck (friction smoothed as in incremental potential
   // contact, lagged_friction.hpp).
-  double friction_creep = 1e-3;
+  double friction_creep = 1e-2;
 
   /// Why the options cannot be used, or "" when they can; `field` gets the option's name.
   std::string invalid_reason(std::string* field = nullptr) const;
