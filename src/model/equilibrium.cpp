@@ -19,10 +19,17 @@ Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask lock
   if (length2 == 0.0) return free;
   const Eigen::Vector3d tangential = free - (free.dot(normal_free) / length2) * normal_free;
   if (friction == 0.0) return tangential;
-  // The locks' reactions carry what of R they take; the body carries the rest of its normal part.
-  const double held = friction * -free.dot(*contact_normal);
+  const double held = friction * pressing_force(resultant, locks, *contact_normal);
   const double length = tangential.norm();
   return length <= held ? Eigen::Vector3d::Zero() : Eigen::Vector3d((1.0 - held / length) * tangential);
+}
+
+double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Eigen::Vector3d& normal) {
+  if (locks == 0) return std::max(-resultant.dot(normal), 0.0);
+  const Eigen::Vector3d normal_free = remove_locked(normal, locks);
+  const double length2 = normal_free.squaredNorm();
+  if (length2 == 0.0) return 0.0;
+  return std::max(-remove_locked(resultant, locks).dot(normal_free) / length2, 0.0);
 }
 
 namespace {
@@ -41,14 +48,17 @@ NearestSurface nearest_surface(const Model& model, const Eigen::Vector3d& p) {
   return nearest;
 }
 
-// A node on a body is stuck when friction could hold a force larger by more than e than the
-// one it holds; frictionless, it is never stuck.
-bool stuck(const Eigen::Vector3d& r, AxisMask locks, const Eigen::Vector3d& normal, double friction,
-           double tolerance_N) {
-  if (friction == 0.0) return false;
-  const Eigen::Vector3d free = remove_locked(r, locks);
-  const double held = friction * -free.dot(normal);
-  return unbalanced_force(r, locks, &normal).norm() < held - tolerance_N;
+enum class Grip { none, sliding, stuck };
+
+// A node pressed on a body slides when its tangential force reaches μ·λ to within e (on a
+// frictionless body, always), and is stuck when friction holds it further inside the cone; a
+// node that touches a body without pressing on it is neither.
+Grip grip(const Eigen::Vector3d& r, AxisMask locks, const Eigen::Vector3d& normal, double friction,
+          double tolerance_N) {
+  const double pressing = pressing_force(r, locks, normal);
+  if (pressing == 0.0) return Grip::none;
+  const bool inside = unbalanced_force(r, locks, &normal).norm() < friction * pressing - tolerance_N;
+  return inside ? Grip::stuck : Grip::sliding;
 }
 
 }  // namespace
@@ -59,7 +69,6 @@ EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eige
   EquilibriumReport report;
   report.residual_N.assign(n, 0.0);
   report.contact.assign(n, 0);
-  report.sliding.assign(n, 0);
   for (std::size_t k = 0; k < n; ++k) {
     if (!x[k].allFinite()) {  // no geometry query on a broken state: report it and stop
       report.max_residual_N = std::numeric_limits<double>::quiet_NaN();
@@ -77,9 +86,9 @@ EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eige
     report.contact[k] = touching ? 1 : 0;
     report.contact_nodes += touching ? 1 : 0;
     if (touching) {
-      const bool holds = stuck(r, model.locks[k], nearest.point.normal, friction, tolerance_N);
-      report.sliding[k] = holds ? 0 : 1;
-      (holds ? report.stuck_nodes : report.sliding_nodes) += 1;
+      const Grip g = grip(r, model.locks[k], nearest.point.normal, friction, tolerance_N);
+      report.sliding_nodes += g == Grip::sliding ? 1 : 0;
+      report.stuck_nodes += g == Grip::stuck ? 1 : 0;
     }
     if (report.residual_N[k] > report.max_residual_N || report.worst_node < 0) {
       report.max_residual_N = report.residual_N[k];

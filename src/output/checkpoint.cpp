@@ -11,7 +11,8 @@
 namespace fabform {
 namespace {
 
-constexpr char kMagic[] = "fabform checkpoint 2\n";
+constexpr char kFamily[] = "fabform checkpoint ";
+constexpr char kMagic[] = "fabform checkpoint 2\n";  // 2: each node's friction anchor
 constexpr std::uint32_t kByteOrder = 0x01020304;
 
 // FNV-1a: enough to tell a damaged or truncated file from a whole one.
@@ -49,8 +50,13 @@ class Reader {
   [[noreturn]] void fail(const std::string& why) const { throw InputError({path_, 0, ""}, why); }
 
   void expect_magic() {
-    if (bytes_.compare(0, sizeof kMagic - 1, kMagic) != 0) fail("not a fabform checkpoint");
-    at_ = sizeof kMagic - 1;
+    if (bytes_.compare(0, sizeof kMagic - 1, kMagic) == 0) {
+      at_ = sizeof kMagic - 1;
+      return;
+    }
+    if (bytes_.compare(0, sizeof kFamily - 1, kFamily) != 0) fail("not a fabform checkpoint");
+    fail("written in another checkpoint format (" + bytes_.substr(0, bytes_.find('\n')) +
+         "; this fabform reads format 2): rerun from the scene");
   }
 
   void expect_checksum() {

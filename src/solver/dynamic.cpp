@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "fabform/model/equilibrium.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/thread_count.hpp"
 
@@ -118,8 +119,8 @@ class Dynamics {
     // the normal part pointed (move_node expects a tangent step on a body).
     const NodeFreedom freedom{lock, contact.active() ? &contact.normal : nullptr};
     v = freedom.project((1.0 - damping_) * v + step_.seconds / mass_[i] * r);
-    if (const double mu = contact_friction(model_, contact); mu > 0.0) v = coulomb(v, r, mu, lock, contact.normal, mass_[i]);
     for (const auto& drag : drags_) v = drag->after(k, step_.seconds, mass_[i], v, freedom);
+    if (const double mu = contact_friction(model_, contact); mu > 0.0) v = coulomb(v, r, mu, lock, contact.normal, mass_[i]);
     const NodeMove moved = move_node(model_, k, state_.x[i], step_.seconds * v, contact);
     if (moved.contact.active()) v -= std::min(v.dot(moved.contact.normal), 0.0) * moved.contact.normal;
     state_.x[i] = moved.x;
@@ -131,8 +132,7 @@ class Dynamics {
   // that stops it, it sticks; else it slides on, slowed by that much.
   Eigen::Vector3d coulomb(const Eigen::Vector3d& v, const Eigen::Vector3d& r, double mu, AxisMask lock,
                           const Eigen::Vector3d& normal, double mass) const {
-    const double pressing = std::max(-remove_locked(r, lock).dot(normal), 0.0);
-    const double held = mu * pressing * step_.seconds / mass;  // the speed friction can take away
+    const double held = mu * pressing_force(r, lock, normal) * step_.seconds / mass;  // the speed friction can take away
     const double speed = v.norm();
     return speed <= held ? Eigen::Vector3d::Zero() : Eigen::Vector3d((1.0 - held / speed) * v);
   }

@@ -7,7 +7,11 @@
 // potential within the iteration, with an exact, positive semi-definite Hessian.
 // f0 smooths |u| over a creep length ε: f0' = f1, f1(y) = 2y/ε − y²/ε² below ε and 1 beyond.
 // A node that slipped less than ε is stuck, held by a spring of stiffness up to 2μλ/ε; one that
-// slipped farther slides against a force μλ opposed to its slip.
+// slipped farther slides against a force μλ opposed to its slip. The slip is measured over the
+// whole solve, as IPC measures it over one time step: friction opposes a node's displacement
+// since it landed, not the last iteration's (Newton's iterates are no physical path, and
+// following them made a capstan band's nodes stick that a monotone pull slides). So one solve
+// is one load step: a node that slides and then sticks needs the history of several.
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,7 +33,6 @@ class LaggedFriction final : public Term {
   LaggedFriction(std::vector<FrictionContact> contacts, double creep_m, int node_count);
 
   bool empty() const { return contacts_.empty(); }
-  double creep_m() const { return creep_m_; }
 
   std::string describe(const Model& model) const override;
   Eigen::Vector3d force_at(const Model& model, const Positions& x, int node,

@@ -103,6 +103,16 @@ TEST(Checkpoint, AnotherModelsCheckpointIsRefused) {
   EXPECT_NE(error_of("").find("not a fabform checkpoint"), std::string::npos);
 }
 
+// A checkpoint of the format before friction's anchors is named as such, not as foreign.
+TEST(Checkpoint, EarlierFormatIsNamed) {
+  std::string bytes = checkpoint_bytes(sample_state(false), sample_summary());
+  bytes.replace(0, std::string("fabform checkpoint 2").size(), "fabform checkpoint 1");
+  const std::string error = error_of(bytes);
+  EXPECT_NE(error.find("another checkpoint format (fabform checkpoint 1; this fabform reads format 2)"),
+            std::string::npos)
+      << error;
+}
+
 TEST(Checkpoint, MissingFileSaysThereIsNothingToResume) {
   try {
     read_checkpoint("/nonexistent/checkpoint.bin", 5, 2);

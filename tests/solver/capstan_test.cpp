@@ -11,8 +11,10 @@
 
 #include "fabform/geometry/rigid_body.hpp"
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/output/checkpoint.hpp"
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
+#include "support/temp_dir.hpp"
 
 namespace fabform {
 namespace {
@@ -109,6 +111,28 @@ TEST(Capstan, SlidingBandHoldsTheRatioEToTheMuTheta) {
                 std::exp(mu * kPi), s.iterations);
     EXPECT_EQ(check.stuck_nodes, 0);
   }
+}
+
+// Friction's anchors travel in the checkpoint: a run stopped after 20 Newton iterations and
+// resumed from its checkpoint file slides on to the uninterrupted run's rest, bit for bit.
+TEST(Capstan, ResumedRunEndsBitForBitWhereTheWholeRunEnds) {
+  SolverSpec spec;
+  spec.name = "newton";
+  spec.newton.tolerance_N = 1e-9;
+  Capstan whole(0.3, 0.01);
+  ASSERT_TRUE(solve(whole.model, whole.state, spec).converged());
+
+  Capstan part(0.3, 0.01);
+  spec.newton.max_iterations = 20;
+  const Summary stopped = solve(part.model, part.state, spec);
+  ASSERT_EQ(stopped.iterations, 20);
+  test::TempDir dir;
+  const std::string file = dir.write("checkpoint.bin", checkpoint_bytes(part.state, stopped));
+  Checkpoint taken_up = read_checkpoint(file, part.model.node_count(), 1);
+  spec.newton.max_iterations = 200;
+  ASSERT_TRUE(solve(part.model, taken_up.state, spec, {}, taken_up.summary).converged());
+  ASSERT_EQ(taken_up.state.x.size(), whole.state.x.size());
+  for (std::size_t k = 0; k < whole.state.x.size(); ++k) EXPECT_EQ(taken_up.state.x[k], whole.state.x[k]) << k;
 }
 
 // Without friction the band's tension is the same on both sides of the cylinder.

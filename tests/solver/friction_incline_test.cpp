@@ -11,9 +11,11 @@
 #include "fabform/geometry/rigid_body.hpp"
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/gravity.hpp"
+#include "fabform/output/checkpoint.hpp"
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 #include "support/shapes.hpp"
+#include "support/temp_dir.hpp"
 
 namespace fabform {
 namespace {
@@ -86,6 +88,23 @@ TEST(FrictionIncline, SlidesDownAtGTimesSinMinusMuCos) {
     const double travel = dt * dt * a * steps * (steps + 1) / 2.0;
     EXPECT_NEAR((state.x[k] - incline.model.start[k]).dot(incline.downhill()), travel, relative * travel) << k;
     EXPECT_TRUE(state.contact[k].active()) << k;
+  }
+}
+
+// A sliding run stopped half way and taken up from its checkpoint file goes on bit for bit.
+TEST(FrictionIncline, ResumedSlideIsTheWholeSlide) {
+  const Incline incline(1.1 * kMu);
+  SolverState whole = incline.on_the_plane();
+  solve(incline.model, whole, dynamic_spec(200));
+  SolverState part = incline.on_the_plane();
+  const Summary stopped = solve(incline.model, part, dynamic_spec(100));
+  test::TempDir dir;
+  const std::string file = dir.write("checkpoint.bin", checkpoint_bytes(part, stopped));
+  Checkpoint taken_up = read_checkpoint(file, incline.model.node_count(), 1);
+  solve(incline.model, taken_up.state, dynamic_spec(200), {}, taken_up.summary);
+  for (std::size_t k = 0; k < whole.x.size(); ++k) {
+    EXPECT_EQ(taken_up.state.x[k], whole.x[k]) << k;
+    EXPECT_EQ(taken_up.state.velocity[k], whole.velocity[k]) << k;
   }
 }
 

@@ -20,15 +20,20 @@ namespace fabform {
 Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
                                  const Eigen::Vector3d* contact_normal, double friction = 0.0);
 
+/// λ, the force with which R presses a node on a body of unit normal n (0 when R pulls it off):
+/// the body's reaction along n that keeps the node's free axes on the tangent plane. Locks take
+/// the rest of R, so for a node held on some axes λ = −R_free·n_free / |n_free|² (n_free: n
+/// with the held axes removed); a node held on every axis the body cannot be pressing on.
+double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Eigen::Vector3d& normal);
+
 struct EquilibriumReport {
   std::vector<double> residual_N;      // V_k per node
   std::vector<unsigned char> contact;  // 1 where the node lies on a body
-  std::vector<unsigned char> sliding;  // 1 where a node on a body is at the friction cone's edge
   double max_residual_N = 0.0;         // ‖V‖∞
   int worst_node = -1;
   int contact_nodes = 0;
-  int sliding_nodes = 0;  // on a body, R* at μ·λ (within e): it slides or is about to; μ = 0 slides
-  int stuck_nodes = 0;    // on a body, R* inside the cone: friction holds it
+  int sliding_nodes = 0;  // pressed on a body, R* at μ·λ (within e): it slides or is about to; μ = 0 slides
+  int stuck_nodes = 0;    // pressed on a body, R* inside the cone by more than e: friction holds it
   double max_penetration_m = 0.0;      // deepest node inside any body (0 when none is)
 };
 

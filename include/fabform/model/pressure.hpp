@@ -33,8 +33,6 @@ class PressureLoad final : public Term {
   /// `reference` is o: any fixed point near the fabric (it keeps the volumes' digits).
   PressureLoad(const Fabric& fabric, double pressure_Pa, const Eigen::Vector3d& reference);
 
-  double pressure_Pa() const { return pressure_Pa_; }
-
   std::string describe(const Model& model) const override;
   Eigen::Vector3d force_at(const Model& model, const Positions& x, int node,
                            const Eigen::Vector3d& at) const override;
