@@ -14,9 +14,8 @@ namespace fabform {
 /// The unbalanced force at a node: R with locked axes removed, and for a node in contact
 /// (normal != nullptr) whose R presses into the body, its part R* along the directions the
 /// node may still move in: free axes within the tangent plane. With Coulomb friction μ
-/// (`friction`), the body also holds up to μ·λ of R*, λ the force pressing the node on it
-/// (the free part of R along −n): what stays is R*'s excess over the friction cone, so a node
-/// inside the cone is balanced, stuck or not.
+/// (`friction`), the body also holds up to μ·λ of R*, λ = pressing_force (below): what stays
+/// is R*'s excess over the friction cone, so a node inside the cone is balanced, stuck or not.
 Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
                                  const Eigen::Vector3d* contact_normal, double friction = 0.0);
 
