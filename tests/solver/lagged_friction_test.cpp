@@ -66,7 +66,7 @@ TEST(LaggedFriction, StuckNodeIsHeldBySpringSlidingNodeByMuLambda) {
 
 TEST(LaggedFriction, EnergyIsContinuousAtTheCreepLength) {
   const Patch p;
-  const FrictionContact& c = Patch::contacts()[2];
+  const FrictionContact c = Patch::contacts()[2];
   Positions below = p.x, above = p.x;
   below[2] = c.anchor + Eigen::Vector3d(kCreep_m * (1.0 - 1e-9), 0.0, 0.0);
   above[2] = c.anchor + Eigen::Vector3d(kCreep_m * (1.0 + 1e-9), 0.0, 0.0);
