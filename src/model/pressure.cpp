@@ -29,15 +29,20 @@ PressureLoad::PressureLoad(const Fabric& fabric, double pressure_Pa, const Eigen
                                        {c[0], c[1], c[3]}, {c[1], c[2], c[3]}})
       triangles_.push_back({t, 0.5});
   }
-  std::map<std::array<int, 2>, int> sides;
+  const auto side_of = [&](const Triangle& t, int corner) {
+    const int a = t.node[static_cast<std::size_t>(corner)];
+    const int b = t.node[static_cast<std::size_t>((corner + 1) % 3)];
+    return std::array<int, 2>{std::min(a, b), std::max(a, b)};
+  };
+  std::map<std::array<int, 2>, int> side_index;  // sorted: Newton's matrix sums in this order
   for (std::size_t i = 0; i < triangles_.size(); ++i)
     for (int corner = 0; corner < 3; ++corner) {
-      const int a = triangles_[i].node[static_cast<std::size_t>(corner)];
-      const int b = triangles_[i].node[static_cast<std::size_t>((corner + 1) % 3)];
-      triangles_at_[static_cast<std::size_t>(a)].push_back(static_cast<int>(i));
-      sides.emplace(std::array<int, 2>{std::min(a, b), std::max(a, b)}, 0);
+      triangles_at_[static_cast<std::size_t>(triangles_[i].node[static_cast<std::size_t>(corner)])].push_back(static_cast<int>(i));
+      side_index.emplace(side_of(triangles_[i], corner), 0);
     }
-  for (const auto& [side, unused] : sides) sides_.push_back(side);
+  for (auto& [side, index] : side_index) index = static_cast<int>(sides_.size()), sides_.push_back(side);
+  for (Triangle& t : triangles_)
+    for (int corner = 0; corner < 3; ++corner) t.side[static_cast<std::size_t>(corner)] = side_index[side_of(t, corner)];
 }
 
 std::string PressureLoad::describe(const Model& /*model*/) const {
@@ -88,19 +93,17 @@ double PressureLoad::node_energy_change(const Model& /*model*/, const Positions&
 // ∂²V/∂x_a∂x_b = −[x_c − o]×/6 for a triangle (a, b, c) in its order (det is linear in each
 // corner, so the diagonal blocks vanish); seen from b's side it is the transpose, [x_c − o]×/6.
 std::vector<PressureCoupling> PressureLoad::couplings(const Positions& x) const {
-  std::map<std::array<int, 2>, Eigen::Vector3d> s;
-  for (const auto& side : sides_) s[side] = Eigen::Vector3d::Zero();
+  std::vector<PressureCoupling> out;
+  out.reserve(sides_.size());
+  for (const auto& side : sides_) out.push_back({side[0], side[1], Eigen::Vector3d::Zero()});
   for (const Triangle& t : triangles_)
     for (int corner = 0; corner < 3; ++corner) {
       const int a = t.node[static_cast<std::size_t>(corner)];
       const int b = t.node[static_cast<std::size_t>((corner + 1) % 3)];
       const Eigen::Vector3d c = x[static_cast<std::size_t>(t.node[static_cast<std::size_t>((corner + 2) % 3)])] - reference_;
       const double sign = a < b ? -1.0 : 1.0;
-      s[{std::min(a, b), std::max(a, b)}] += sign * t.weight * pressure_Pa_ / 6.0 * c;
+      out[static_cast<std::size_t>(t.side[static_cast<std::size_t>(corner)])].s += sign * t.weight * pressure_Pa_ / 6.0 * c;
     }
-  std::vector<PressureCoupling> out;
-  out.reserve(sides_.size());
-  for (const auto& side : sides_) out.push_back({side[0], side[1], s[side]});
   return out;
 }
 

@@ -49,6 +49,7 @@ class PressureLoad final : public Term {
   struct Triangle {
     std::array<int, 3> node;
     double weight;  // 1, or 1/2 for each of a four-sided face's four triangles
+    std::array<int, 3> side = {-1, -1, -1};  // sides_ index of corner → next corner
   };
   double triangle_volume(const Triangle& t, const Positions& x, int moved, const Eigen::Vector3d& at) const;
 
@@ -56,7 +57,7 @@ class PressureLoad final : public Term {
   Eigen::Vector3d reference_;
   std::vector<Triangle> triangles_;
   std::vector<std::vector<int>> triangles_at_;  // per node: indices into triangles_
-  std::vector<std::array<int, 2>> sides_;       // pairs a < b sharing a triangle, in a fixed order
+  std::vector<std::array<int, 2>> sides_;       // pairs a < b sharing a triangle, sorted
 };
 
 }  // namespace fabform
