@@ -1,7 +1,7 @@
 """What the mold generators share: OBJ text written to the byte, and writing it or checking that
 the shipped file is what the generator writes (`--check`, run by the test suite).
 
-Imported by tools/make_dome_mold.py and tools/make_cusick_disc.py. Standard library only.
+Imported by tools/make_dome_mold.py, tools/make_cup_mold.py and tools/make_cusick_disc.py. Standard library only.
 """
 import argparse
 import pathlib

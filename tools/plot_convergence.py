@@ -33,10 +33,18 @@ def read_history(path: pathlib.Path) -> tuple:
         if missing:
             raise InputError(f"{path}:1: missing column(s) {', '.join(missing)}")
         iterations, residuals = [], []
+        # A run in load steps counts iterations within each step: laid end to end, step after
+        # step, they make one run-long count (each step's iteration 0 is the end of the last).
+        in_steps = "step" in (reader.fieldnames or [])
+        step, before = None, 0
         for row in reader:
             try:
-                iterations.append(int(row["iteration"]))
-                residuals.append(float(row["residual_N"]))
+                iteration = int(row["iteration"])
+                residual = float(row["residual_N"])
+                if in_steps and row["step"] != step:
+                    step, before = row["step"], iterations[-1] if iterations else 0
+                iterations.append(before + iteration)
+                residuals.append(residual)
             except (TypeError, ValueError):
                 raise InputError(f"{path}:{reader.line_num}: not a number in iteration or residual_N")
     if not iterations:

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 mkdir -p docs/pictures
-for scene in mold vacuum torso torso_frictionless dome; do
+for scene in mold vacuum cup torso torso_frictionless dome; do
   status=0
   build/fabform run "scenes/$scene.toml" --out "results/$scene" --quiet || status=$?
   if [[ $status -ne 0 && $status -ne 3 ]]; then exit "$status"; fi

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
 #include "fabform/solver/interrupt.hpp"
+#include "fabform/solver/load_steps.hpp"
 
 namespace fabform::cli {
 namespace {
@@ -156,13 +158,17 @@ int run(const RunArguments& args) {
   const auto started = std::chrono::steady_clock::now();
   const RunStart start = start_of(args);
   const Scene& scene = start.scene;
-  const Model model = build_model(scene);
+  Model model = build_model(scene);  // its bodies travel in a run in load steps
   const std::string dir = output_dir(args, scene);
   check_results_folder(dir);
   const RunInputs inputs = describe_inputs(scene, start.overrides);
   SolverState state = SolverState::at_start(model);
   Summary so_far;
-  if (start.recorded) take_up_checkpoint(dir, model, *start.recorded, inputs, &state, &so_far);
+  std::vector<StepResult> finished_steps;
+  if (start.recorded) {
+    take_up_checkpoint(dir, model, *start.recorded, inputs, &state, &so_far);
+    finished_steps = read_step_results(dir);
+  }
   so_far = begin_summary(scene.solver.name, scene.solver.tolerance_N(), std::move(so_far));
   std::fprintf(stderr, "fabform: scene %s, %d nodes, %zu bodies, solver %s, e = %g N%s\n",
                scene.name.c_str(), model.node_count(), model.bodies.size(),
@@ -175,13 +181,27 @@ int run(const RunArguments& args) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m, scene.solver.tolerance_N());
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     write_results(dir, RunRecord{scene, model, s, summary, check, inputs,
-                                 collect_warnings(model, s, check, 1e-6, of_model), wall, scene.solver.threads});
+                                 collect_warnings(model, s, check, 1e-6, of_model), wall, scene.solver.threads,
+                                 &finished_steps});
   };
   Progress progress(stderr);
   RunMonitor monitor(state, so_far, scene.checkpoint, publish, args.quiet ? nullptr : &progress);
   const InterruptHandlers handlers;
-  Summary summary = solve(model, state, scene.solver,
-                          [&](const IterationRecord& r) { monitor.observe(r); }, std::move(so_far));
+  const IterationObserver observe = [&](const IterationRecord& r) { monitor.observe(r); };
+  // A finished load step is kept (replacing the one a resumed run finished again) and
+  // checkpointed, so that the run goes on from the next step.
+  const StepObserver step_done = [&](int step, const SolverState& s, const Summary& of_step) {
+    const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m, scene.solver.tolerance_N());
+    StepResult result = step_result(RunRecord{scene, model, s, of_step, check, inputs, {}, 0.0, scene.solver.threads}, step);
+    finished_steps.erase(std::remove_if(finished_steps.begin(), finished_steps.end(),
+                                        [&](const StepResult& r) { return r.step >= step; }),
+                         finished_steps.end());
+    finished_steps.push_back(std::move(result));
+    monitor.checkpoint();
+  };
+  Summary summary = model.load_steps() > 0
+                        ? solve_in_steps(model, state, scene.solver, observe, step_done, std::move(so_far))
+                        : solve(model, state, scene.solver, observe, std::move(so_far));
   if (!args.quiet) progress.finish();
   explain_ending(&summary, monitor, dir);
   const bool broke = summary.termination == Termination::numerical_failure && monitor.last_good_iteration() >= 0;

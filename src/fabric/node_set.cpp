@@ -1,5 +1,6 @@
 #include "fabform/fabric/node_set.hpp"
 
+#include <algorithm>
 #include <limits>
 
 namespace fabform {
@@ -51,6 +52,24 @@ bool in_box(const Eigen::Vector2d& p, const NodeSetSpec& spec) {
   return (p.array() >= spec.box_min.array()).all() && (p.array() <= spec.box_max.array()).all();
 }
 
+// How far a node of the flat fabric lies inside its edge: to the nearest side of a rectangle,
+// to the rim of a circle.
+double depth_inside(const Fabric& fabric, int node) {
+  const Eigen::Vector2d p = fabric.rest_position(node).head<2>();
+  const FabricSpec& spec = fabric.spec();
+  if (spec.shape == FabricSpec::Shape::circle)
+    return spec.radius_m() - (p - Eigen::Vector2d(spec.radius_m(), spec.radius_m())).norm();
+  return std::min({p.x(), spec.width_m - p.x(), p.y(), spec.height_m - p.y()});
+}
+
+bool selected(const Fabric& fabric, const NodeSetSpec& spec, int node) {
+  using Kind = NodeSetSpec::Kind;
+  if (spec.kind == Kind::box) return in_box(fabric.rest_position(node).head<2>(), spec);
+  // A node on the frame's inner line belongs to it, whatever the rounding of its position.
+  if (spec.kind == Kind::frame) return depth_inside(fabric, node) <= spec.width_m * (1.0 + 1e-9);
+  return in_named_set(fabric, spec.kind, node);
+}
+
 }  // namespace
 
 std::vector<int> select_nodes(const Fabric& fabric, const NodeSetSpec& spec) {
@@ -61,12 +80,8 @@ std::vector<int> select_nodes(const Fabric& fabric, const NodeSetSpec& spec) {
     return nodes;
   }
   if (spec.kind == Kind::nearest) return {nearest_node(fabric, spec.point)};
-  for (int k = 0; k < fabric.node_count(); ++k) {
-    const bool selected = spec.kind == Kind::box
-                              ? in_box(fabric.rest_position(k).head<2>(), spec)
-                              : in_named_set(fabric, spec.kind, k);
-    if (selected) nodes.push_back(k);
-  }
+  for (int k = 0; k < fabric.node_count(); ++k)
+    if (selected(fabric, spec, k)) nodes.push_back(k);
   return nodes;
 }
 

@@ -9,15 +9,15 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Eigen::Matrix3d rotation_matrix(const Eigen::Vector3d& degrees) {
+}  // namespace
+
+Eigen::Matrix3d rotation_from_degrees(const Eigen::Vector3d& degrees) {
   const Eigen::Vector3d r = degrees * kPi / 180.0;
   return (Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) *
           Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
           Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX()))
       .toRotationMatrix();
 }
-
-}  // namespace
 
 std::string Placement::invalid_reason(std::string* field) const {
   const auto bad = [&](const char* name, const char* why) {
@@ -40,7 +40,7 @@ bool parse_length_unit(const std::string& unit, double* metres_per_unit) {
 }
 
 TriangleMesh place(const TriangleMesh& mesh, const Placement& placement) {
-  const Eigen::Matrix3d rotation = rotation_matrix(placement.rotation_deg);
+  const Eigen::Matrix3d rotation = rotation_from_degrees(placement.rotation_deg);
   const double factor = placement.metres_per_unit * placement.scale;
   TriangleMesh placed = mesh;
   for (auto& v : placed.vertices) v = rotation * (factor * v) + placement.translation_m;

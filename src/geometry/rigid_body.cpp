@@ -191,13 +191,39 @@ SurfacePoint RigidBody::surface_point_on(int triangle, const Eigen::Vector3d& p)
   return s;
 }
 
-SurfacePoint RigidBody::closest(const Eigen::Vector3d& p) const {
-  if (auto found = closest_within(p, std::numeric_limits<double>::infinity())) return *found;
-  return surface_point_on(0, p);  // only if Embree found no candidate at all
+void RigidBody::move_to(const Eigen::Isometry3d& pose) {
+  pose_ = pose;
+  inverse_ = pose.inverse();
+  moved_ = !pose.isApprox(Eigen::Isometry3d::Identity(), 0.0);
 }
 
-std::optional<SurfacePoint> RigidBody::closest_within(const Eigen::Vector3d& p,
-                                                      double radius) const {
+TriangleMesh RigidBody::posed_mesh() const {
+  TriangleMesh posed = mesh_;
+  if (moved_)
+    for (Eigen::Vector3d& v : posed.vertices) v = pose_ * v;
+  return posed;
+}
+
+SurfacePoint RigidBody::to_posed(SurfacePoint s) const {
+  if (!moved_) return s;
+  s.point = pose_ * s.point;
+  s.normal = pose_.linear() * s.normal;
+  return s;
+}
+
+SurfacePoint RigidBody::closest(const Eigen::Vector3d& p) const {
+  if (auto found = closest_within(p, std::numeric_limits<double>::infinity())) return *found;
+  return to_posed(surface_point_on(0, to_placed(p)));  // only if Embree found no candidate at all
+}
+
+std::optional<SurfacePoint> RigidBody::closest_within(const Eigen::Vector3d& p, double radius) const {
+  auto found = closest_within_placed(to_placed(p), radius);
+  if (found) *found = to_posed(*found);
+  return found;
+}
+
+std::optional<SurfacePoint> RigidBody::closest_within_placed(const Eigen::Vector3d& p,
+                                                             double radius) const {
   SurfacePoint best;
   best.distance = std::numeric_limits<double>::infinity();
   // Embree culls with float boxes and a float query point, each off by an ulp or so: keep a
@@ -217,6 +243,13 @@ std::optional<SurfacePoint> RigidBody::closest_within(const Eigen::Vector3d& p,
 
 std::optional<SurfacePoint> RigidBody::first_entry(const Eigen::Vector3d& from,
                                                    const Eigen::Vector3d& to) const {
+  auto found = first_entry_placed(to_placed(from), to_placed(to));
+  if (found) *found = to_posed(*found);
+  return found;
+}
+
+std::optional<SurfacePoint> RigidBody::first_entry_placed(const Eigen::Vector3d& from,
+                                                          const Eigen::Vector3d& to) const {
   const Eigen::Vector3d direction = to - from;
   if (direction.isZero()) return std::nullopt;
   double t_near = 0.0;
@@ -237,8 +270,9 @@ std::optional<SurfacePoint> RigidBody::first_entry(const Eigen::Vector3d& from,
 }
 
 bool RigidBody::segment_crosses(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
-  const Eigen::Vector3d direction = to - from;
-  return !direction.isZero() && bvh_->first_hit(from, direction, 0.0, 1.0).has_value();
+  const Eigen::Vector3d start = to_placed(from);
+  const Eigen::Vector3d direction = to_placed(to) - start;
+  return !direction.isZero() && bvh_->first_hit(start, direction, 0.0, 1.0).has_value();
 }
 
 }  // namespace fabform

@@ -55,6 +55,12 @@ bool Model::has_friction() const {
   return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.friction() > 0.0; });
 }
 
+int Model::load_steps() const {
+  int steps = 0;
+  for (const ToolPath& path : paths) steps = std::max(steps, path.steps);
+  return steps;
+}
+
 Eigen::Vector3d node_force_at(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   for (const auto& term : model.terms) force += term->force_at(model, x, node, at);

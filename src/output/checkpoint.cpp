@@ -12,7 +12,8 @@ namespace fabform {
 namespace {
 
 constexpr char kFamily[] = "fabform checkpoint ";
-constexpr char kMagic[] = "fabform checkpoint 2\n";  // 2: each node's friction anchor
+// 2: each node's friction anchor; 3: each record's load step.
+constexpr char kMagic[] = "fabform checkpoint 3\n";
 constexpr std::uint32_t kByteOrder = 0x01020304;
 
 // FNV-1a: enough to tell a damaged or truncated file from a whole one.
@@ -56,7 +57,7 @@ class Reader {
     }
     if (bytes_.compare(0, sizeof kFamily - 1, kFamily) != 0) fail("not a fabform checkpoint");
     fail("written in another checkpoint format (" + bytes_.substr(0, bytes_.find('\n')) +
-         "; this fabform reads format 2): rerun from the scene");
+         "; this fabform reads format 3): rerun from the scene");
   }
 
   void expect_checksum() {
@@ -105,7 +106,7 @@ class Reader {
 
 constexpr std::size_t kNodeBytes = 9 * sizeof(double) + sizeof(std::int32_t);
 constexpr std::size_t kVelocityBytes = 3 * sizeof(double);
-constexpr std::size_t kRecordBytes = 2 * sizeof(std::int64_t) + 2 * sizeof(double);
+constexpr std::size_t kRecordBytes = 3 * sizeof(std::int64_t) + 2 * sizeof(double);
 
 void put_state(Writer& out, const SolverState& s) {
   out.put(static_cast<std::uint64_t>(s.x.size()));
@@ -131,6 +132,7 @@ void put_summary(Writer& out, const Summary& s) {
   out.put(static_cast<std::int64_t>(s.worst_node));
   out.put(static_cast<std::uint64_t>(s.history.size()));
   for (const IterationRecord& r : s.history) {
+    out.put(static_cast<std::int64_t>(r.step));
     out.put(static_cast<std::int64_t>(r.iteration));
     out.put(r.residual_N);
     out.put(r.seconds);
@@ -176,6 +178,7 @@ Summary get_summary(Reader& in) {
   s.worst_node = static_cast<int>(in.get<std::int64_t>());
   s.history.resize(in.get_count(kRecordBytes));
   for (IterationRecord& r : s.history) {
+    r.step = static_cast<int>(in.get<std::int64_t>());
     r.iteration = static_cast<int>(in.get<std::int64_t>());
     r.residual_N = in.get<double>();
     r.seconds = in.get<double>();

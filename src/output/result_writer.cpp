@@ -9,8 +9,10 @@
 #include <nlohmann/json.hpp>
 
 #include "fabform/analysis/drape_figures.hpp"
+#include "fabform/error.hpp"
 #include "fabform/model/spring_strains.hpp"
 #include "fabform/output/checkpoint.hpp"
+#include "fabform/output/draw_in.hpp"
 #include "fabform/output/fabric_figures.hpp"
 #include "fabform/io/obj_text.hpp"
 #include "fabform/output/results_folder.hpp"
@@ -109,6 +111,9 @@ std::string result_json(const RunRecord& run) {
   j["contact_nodes"] = run.check.contact_nodes;
   j["max_penetration_m"] = number(run.check.max_penetration_m);
   j["figures"] = figures_json(fabric_figures(run.model, run.state.x, run.check.contact));
+  const DrawIn edge = draw_in(run.model, run.state.x);
+  j["figures"]["draw_in_max_m"] = edge.max_node < 0 ? nlohmann::json(nullptr) : number(edge.max_m);
+  j["figures"]["draw_in_max_node"] = edge.max_node < 0 ? nlohmann::json(nullptr) : nlohmann::json(run.model.fabric.node_name(edge.max_node));
   j["figures"]["sliding_nodes"] = run.check.sliding_nodes;
   j["figures"]["stuck_nodes"] = run.check.stuck_nodes;
   j["fabric"] = fabric_json(run.model.fabric);
@@ -128,15 +133,25 @@ std::string result_json(const RunRecord& run) {
     constraints.push_back({{"nodes", c.nodes_text}, {"axes", axes_to_string(c.axes)}});
   j["constraints"] = constraints;
   j["warnings"] = run.warnings;
+  if (run.model.load_steps() > 0) {
+    j["load_steps"] = run.model.load_steps();
+    nlohmann::json steps = nlohmann::json::array();
+    for (const StepResult& step : run.steps ? *run.steps : std::vector<StepResult>{})
+      steps.push_back(nlohmann::json::parse(step.json));
+    j["steps"] = steps;
+  }
   return j.dump(2) + "\n";
 }
 
-std::string convergence_csv(const Summary& s) {
+// A run in load steps numbers its iterations within each step: a first column says which.
+std::string convergence_csv(const Summary& s, bool in_steps) {
   std::ostringstream out;
   out.precision(10);
-  out << "iteration,residual_N,seconds,contact_nodes\n";
-  for (const IterationRecord& r : s.history)
+  out << (in_steps ? "step," : "") << "iteration,residual_N,seconds,contact_nodes\n";
+  for (const IterationRecord& r : s.history) {
+    if (in_steps) out << r.step << ',';
     out << r.iteration << ',' << r.residual_N << ',' << r.seconds << ',' << r.contact_nodes << '\n';
+  }
   return out.str();
 }
 
@@ -154,21 +169,39 @@ std::string fabric_obj(const RunRecord& run) {
   return out.str();
 }
 
-// Every body as placed in the scene, in metres, in one mesh: what the fabric was formed over,
-// for reports and ParaView.
-std::string bodies_obj(const RunRecord& run) {
+// Every body where it stands (placed, then moved along its path), in metres, in one mesh: what
+// the fabric was formed over, for reports and ParaView.
+TriangleMesh posed_bodies(const Model& model) {
   TriangleMesh all;
-  for (const RigidBody& body : run.model.bodies) {
+  for (const RigidBody& body : model.bodies) {
+    const TriangleMesh mesh = body.posed_mesh();
     const int offset = static_cast<int>(all.vertices.size());
-    all.vertices.insert(all.vertices.end(), body.mesh().vertices.begin(), body.mesh().vertices.end());
-    for (const auto& t : body.mesh().triangles) all.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    all.vertices.insert(all.vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+    for (const auto& t : mesh.triangles) all.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   }
-  return obj_text(all, "fabform " FABFORM_VERSION ": the bodies of scene " + run.scene.name + " as placed (metres)");
+  return all;
+}
+
+std::string bodies_obj(const RunRecord& run) {
+  return obj_text(posed_bodies(run.model), "fabform " FABFORM_VERSION ": the bodies of scene " + run.scene.name +
+                                              " where the run left them (metres)");
 }
 
 void vtk_field(std::ostringstream& out, const char* name, const std::vector<double>& values) {
   out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
   for (const double v : values) out << (std::isfinite(v) ? v : 0.0) << '\n';
+}
+
+using PointField = std::pair<const char*, std::vector<double>>;
+
+// What each node of the formed fabric carries into ParaView.
+std::vector<PointField> fabric_fields(const RunRecord& run) {
+  const NodeStrains strains = node_strains(run.model, run.state.x);
+  return {{"strain_warp", strains.warp},
+          {"strain_weft", strains.weft},
+          {"contact", std::vector<double>(run.check.contact.begin(), run.check.contact.end())},
+          {"residual_N", run.check.residual_N},
+          {"draw_in_m", draw_in(run.model, run.state.x).per_node_m}};
 }
 
 std::string fabric_vtk(const RunRecord& run) {
@@ -187,14 +220,70 @@ std::string fabric_vtk(const RunRecord& run) {
     for (int c = 0; c < f.corners; ++c) out << ' ' << f.corner[static_cast<std::size_t>(c)];
     out << '\n';
   }
-  const NodeStrains strains = node_strains(run.model, x);
   out << "POINT_DATA " << x.size() << '\n';
-  vtk_field(out, "strain_warp", strains.warp);
-  vtk_field(out, "strain_weft", strains.weft);
-  vtk_field(out, "contact", std::vector<double>(run.check.contact.begin(), run.check.contact.end()));
-  vtk_field(out, "residual_N", run.check.residual_N);
+  for (const auto& [name, values] : fabric_fields(run)) vtk_field(out, name, values);
   return out.str();
 }
+
+// VTK's XML polygon data, ASCII: what a ParaView collection (.pvd) plays as a series.
+std::string vtp_text(const std::vector<Eigen::Vector3d>& points, const std::vector<std::vector<int>>& polygons,
+                     const std::vector<PointField>& fields) {
+  std::ostringstream out;
+  out.precision(12);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "<PolyData>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfPolys=\"" << polygons.size() << "\">\n"
+      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (const auto& p : points) out << (std::isfinite(p.x()) ? p.x() : 0.0) << ' ' << (std::isfinite(p.y()) ? p.y() : 0.0)
+                                   << ' ' << (std::isfinite(p.z()) ? p.z() : 0.0) << '\n';
+  out << "</DataArray>\n</Points>\n<Polys>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  std::size_t offset = 0;
+  for (const auto& polygon : polygons) {
+    for (const int v : polygon) out << v << ' ';
+    out << '\n';
+  }
+  out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (const auto& polygon : polygons) out << (offset += polygon.size()) << '\n';
+  out << "</DataArray>\n</Polys>\n<PointData>\n";
+  for (const auto& [name, values] : fields) {
+    out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+    for (const double v : values) out << (std::isfinite(v) ? v : 0.0) << '\n';
+    out << "</DataArray>\n";
+  }
+  out << "</PointData>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  return out.str();
+}
+
+std::string fabric_vtp(const RunRecord& run) {
+  std::vector<std::vector<int>> polygons;
+  for (const Face& f : run.model.fabric.faces()) polygons.emplace_back(f.corner.begin(), f.corner.begin() + f.corners);
+  return vtp_text(run.state.x, polygons, fabric_fields(run));
+}
+
+std::string bodies_vtp(const Model& model) {
+  const TriangleMesh all = posed_bodies(model);
+  std::vector<std::vector<int>> polygons;
+  for (const auto& t : all.triangles) polygons.push_back({t[0], t[1], t[2]});
+  return vtp_text(all.vertices, polygons, {});
+}
+
+std::string step_file(const char* what, int step) {
+  char name[64];
+  std::snprintf(name, sizeof name, "%s_step_%03d.vtp", what, step);
+  return name;
+}
+
+// The collection ParaView opens to play the steps: the fabric and the bodies at each.
+std::string steps_pvd(const std::vector<StepResult>& steps) {
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (const StepResult& s : steps)
+    for (const auto& [part, what] : {std::pair<int, const char*>{0, "fabric"}, {1, "bodies"}})
+      out << "<DataSet timestep=\"" << s.step << "\" part=\"" << part << "\" file=\"" << step_file(what, s.step) << "\"/>\n";
+  out << "</Collection>\n</VTKFile>\n";
+  return out.str();
+}
+
+nlohmann::json vector_json(const Eigen::Vector3d& v) { return {number(v.x()), number(v.y()), number(v.z())}; }
 
 }  // namespace
 
@@ -218,7 +307,8 @@ void write_file_atomically(const std::string& path, const std::string& content) 
 }
 
 void write_results(const std::string& dir, const RunRecord& run) {
-  std::vector<ResultFile> files = {{"convergence.csv", convergence_csv(run.summary)},
+  const bool in_steps = run.model.load_steps() > 0;
+  std::vector<ResultFile> files = {{"convergence.csv", convergence_csv(run.summary, in_steps)},
                                    {"fabric.obj", fabric_obj(run)},
                                    {"fabric.vtk", fabric_vtk(run)},
                                    {"result.json", result_json(run)}};
@@ -227,7 +317,72 @@ void write_results(const std::string& dir, const RunRecord& run) {
     files.emplace_back("checkpoint.bin", checkpoint_bytes(run.state, run.summary));
   if (t != Termination::running && !run.model.bodies.empty())  // checkpoints stay light
     files.emplace_back("bodies.obj", bodies_obj(run));
+  if (in_steps && run.steps) {
+    for (const StepResult& step : *run.steps) {
+      files.emplace_back(step_file("fabric", step.step), step.fabric_vtp);
+      files.emplace_back(step_file("bodies", step.step), step.bodies_vtp);
+    }
+    files.emplace_back("fabric_steps.pvd", steps_pvd(*run.steps));
+  }
   publish_results(dir, files);
+}
+
+StepResult step_result(const RunRecord& run, int step) {
+  const Summary& s = run.summary;
+  const FabricFigures f = fabric_figures(run.model, run.state.x, run.check.contact);
+  const DrawIn edge = draw_in(run.model, run.state.x);
+  nlohmann::json travel = nlohmann::json::array();
+  for (std::size_t b = 0; b < run.model.bodies.size(); ++b)
+    if (const ToolPath& path = run.model.paths[b]; path.moves())
+      travel.push_back({{"body", run.model.bodies[b].name()},
+                        {"translation_m", vector_json(path.translation_at(step))},
+                        {"rotation_deg", vector_json(path.rotation_deg_at(step))}});
+  const nlohmann::json j = {{"step", step},
+                            {"travel", travel},
+                            {"converged", s.converged()},
+                            {"iterations", s.iterations},
+                            {"residual_N", number(s.residual_N)},
+                            {"seconds", s.seconds},
+                            {"contact_nodes", run.check.contact_nodes},
+                            {"max_warp_strain", number(f.max_warp.strain)},
+                            {"max_weft_strain", number(f.max_weft.strain)},
+                            {"min_warp_strain", number(f.min_warp.strain)},
+                            {"min_weft_strain", number(f.min_weft.strain)},
+                            {"draw_in_max_m", edge.max_node < 0 ? nlohmann::json(nullptr) : number(edge.max_m)},
+                            {"sliding_nodes", run.check.sliding_nodes},
+                            {"stuck_nodes", run.check.stuck_nodes},
+                            {"fabric_file", step_file("fabric", step)},
+                            {"bodies_file", step_file("bodies", step)}};
+  return {step, j.dump(), fabric_vtp(run), bodies_vtp(run.model)};
+}
+
+namespace {
+
+std::string read_whole(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path.string(), 0, ""}, "missing: a finished load step's file, needed to resume");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+std::vector<StepResult> read_step_results(const std::string& dir) {
+  const fs::path json_path = fs::path(dir) / "result.json";
+  std::vector<StepResult> steps;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(read_whole(json_path));
+    if (!j.contains("steps")) return steps;
+    for (const nlohmann::json& step : j.at("steps")) {
+      const int k = step.at("step").get<int>();
+      steps.push_back({k, step.dump(), read_whole(fs::path(dir) / step_file("fabric", k)),
+                       read_whole(fs::path(dir) / step_file("bodies", k))});
+    }
+  } catch (const nlohmann::json::exception& error) {
+    throw InputError({json_path.string(), 0, "steps"}, std::string("cannot read the finished load steps: ") + error.what());
+  }
+  return steps;
 }
 
 }  // namespace fabform

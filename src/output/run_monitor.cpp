@@ -19,32 +19,40 @@ RunMonitor::RunMonitor(const SolverState& state, Summary so_far, const Checkpoin
       so_far_(std::move(so_far)),
       checkpoints_(checkpoints),
       publish_(std::move(publish)),
-      progress_(progress),
-      last_checkpoint_iteration_(so_far_.iterations) {}
+      progress_(progress) {}
 
 void RunMonitor::observe(const IterationRecord& record) {
   if (progress_) progress_->update(record);
   if (!std::isfinite(record.residual_N)) return;
   keep_good_state(record);
-  if (!so_far_.history.empty() && so_far_.history.back().iteration == record.iteration)
+  // A resumed run, or a load step's solver, re-measures the state it goes on from.
+  if (!so_far_.history.empty() && so_far_.history.back().iteration == record.iteration &&
+      so_far_.history.back().step == record.step) {
     so_far_.history.back() = record;
-  else
+  } else {
     so_far_.history.push_back(record);
-  if (!checkpoint_due(record)) return;
+    if (record.iteration > 0) ++iterations_since_checkpoint_;  // iteration 0 measures a start
+  }
+  if (checkpoint_due()) checkpoint();
+}
+
+void RunMonitor::checkpoint() {
+  if (so_far_.history.empty()) return;
+  const IterationRecord& record = so_far_.history.back();
   Summary snapshot = so_far_;
   snapshot.termination = Termination::running;
-  snapshot.iterations = record.iteration;
+  snapshot.iterations = total_iterations(so_far_.history);
   snapshot.residual_N = record.residual_N;
   snapshot.seconds = record.seconds;
   snapshot.message = stop_message(snapshot);
   publish_(state_, snapshot);
-  last_checkpoint_iteration_ = record.iteration;
+  iterations_since_checkpoint_ = 0;
   last_checkpoint_time_ = Clock::now();
 }
 
-bool RunMonitor::checkpoint_due(const IterationRecord& record) const {
+bool RunMonitor::checkpoint_due() const {
   const int every = checkpoints_.every_iterations;
-  if (every > 0 && record.iteration - last_checkpoint_iteration_ >= every) return true;
+  if (every > 0 && iterations_since_checkpoint_ >= every) return true;
   const double minutes = std::chrono::duration<double>(Clock::now() - last_checkpoint_time_).count() / 60.0;
   return checkpoints_.every_minutes > 0.0 && minutes >= checkpoints_.every_minutes;
 }

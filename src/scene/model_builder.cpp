@@ -8,6 +8,7 @@
 
 #include "fabform/io/mesh_reader.hpp"
 #include "fabform/material/material_csv.hpp"
+#include "fabform/model/clamp_frame.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/pressure.hpp"
@@ -90,6 +91,17 @@ std::vector<RigidBody> build_bodies(const Scene& scene) {
   std::vector<RigidBody> bodies;
   for (const BodySpec& spec : scene.bodies) bodies.push_back(build_body(spec));
   return bodies;
+}
+
+// A turn is about the placed mesh's bounding box's centre unless the scene names a pivot.
+std::vector<ToolPath> build_paths(const Scene& scene, const std::vector<RigidBody>& bodies) {
+  std::vector<ToolPath> paths;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    ToolPath path = scene.bodies[b].path;
+    if (!scene.bodies[b].pivot_given) path.pivot_m = 0.5 * (bodies[b].box().min + bodies[b].box().max);
+    paths.push_back(path);
+  }
+  return paths;
 }
 
 Fabric build_fabric(const Scene& scene) {
@@ -179,18 +191,58 @@ void add_bending(const Scene& scene, Model* model) {
   }
 }
 
-// The pressure's potential is the follower load only where the fabric's edge cannot move
-// (pressure.hpp): a clamped blank.
+// The blank holder grips its nodes in z (locks) and resists their draw-in by friction; its creep
+// length is the one newton gives friction on bodies.
+void add_clamp(const Scene& scene, Model* model) {
+  if (!scene.clamp.on) return;
+  const ClampSpec& c = scene.clamp;
+  std::vector<int> nodes = select_nodes(model->fabric, c.nodes);
+  if (nodes.empty())
+    throw InputError(c.where, "the clamp's region (" + c.nodes_text + ") selects no node of the " + fabric_name(model->fabric));
+  for (const int k : nodes) {
+    auto& lock = model->locks[static_cast<std::size_t>(k)];
+    lock = static_cast<AxisMask>(lock | kLockZ);
+  }
+  const ClampOptions options{c.force_N, c.friction, friction_creep_m(model->fabric, scene.solver.newton.friction_creep)};
+  model->terms.push_back(std::make_shared<ClampFrame>(model->fabric, std::move(nodes), options, model->start));
+}
+
+// The pressure's potential is the follower load inside the fabric (pressure.hpp); on its edge
+// the gradient differs from it by (x_k − o) × (the edge's chord at k) / 6, which a held node
+// does not feel, and which points along z, where a clamped rim is held, when the rim and the
+// reference point o lie in one horizontal plane. So the edge must be held in z, and where it
+// may draw in (not held in x and y), it must start in one horizontal plane, o its centroid.
+Eigen::Vector3d pressure_reference(const Scene& scene, const Model& model) {
+  const AxisMask all = kLockX | kLockY | kLockZ;
+  Eigen::Vector3d rim = Eigen::Vector3d::Zero();
+  int count = 0, first_rim = -1;
+  bool draws_in = false;
+  for (int k = 0; k < model.node_count(); ++k) {
+    if (!model.fabric.on_perimeter(k)) continue;
+    const AxisMask lock = model.locks[static_cast<std::size_t>(k)];
+    if (!(lock & kLockZ))
+      throw InputError(scene.pressure.where, "a pressure needs the fabric's edge held in z (a clamped blank): " +
+                                                 model.fabric.node_name(k) + " is not");
+    draws_in = draws_in || lock != all;
+    if (first_rim < 0) first_rim = k;
+    rim += model.start[static_cast<std::size_t>(k)], ++count;
+  }
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : model.start) centre += p;
+  if (!draws_in) return centre / static_cast<double>(model.node_count());
+  rim /= static_cast<double>(count);
+  rim.z() = model.start[static_cast<std::size_t>(first_rim)].z();  // exactly the plane, not a mean's rounding
+  for (int k = 0; k < model.node_count(); ++k)
+    if (model.fabric.on_perimeter(k) && model.start[static_cast<std::size_t>(k)].z() != rim.z())
+      throw InputError(scene.pressure.where, "a pressure on a blank whose edge draws in needs the edge to start in one "
+                                             "horizontal plane: " + model.fabric.node_name(k) + " does not");
+  return rim;
+}
+
 void add_pressure(const Scene& scene, Model* model) {
   if (!scene.pressure.on) return;
-  for (int k = 0; k < model->node_count(); ++k)
-    if (model->fabric.on_perimeter(k) && model->locks[static_cast<std::size_t>(k)] != (kLockX | kLockY | kLockZ))
-      throw InputError(scene.pressure.where, "a pressure needs the fabric's edge held in x, y and z (a clamped blank): " +
-                                                 model->fabric.node_name(k) + " is not");
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : model->start) centre += p;
-  centre /= static_cast<double>(model->node_count());
-  model->terms.push_back(std::make_shared<PressureLoad>(model->fabric, scene.pressure.pressure_Pa, centre));
+  const Eigen::Vector3d reference = pressure_reference(scene, *model);
+  model->terms.push_back(std::make_shared<PressureLoad>(model->fabric, scene.pressure.pressure_Pa, reference));
 }
 
 void add_wind(const Scene& scene, Model* model) {
@@ -228,10 +280,12 @@ Model build_model(const Scene& scene) {
   const MaterialFile weft = read_material(scene.weft_path, scene.weft_where);
   Model model{fabric, warp.table, weft.table, build_locks(scene, fabric), build_bodies(scene),
               build_start(scene, fabric)};
+  model.paths = build_paths(scene, model.bodies);
   add_shear(scene, &model);
   add_bending(scene, &model);
   add_gravity(scene, warp, weft, &model);
   add_wind(scene, &model);
+  add_clamp(scene, &model);
   add_pressure(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);

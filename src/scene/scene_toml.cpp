@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "fabform/model/clamp_frame.hpp"
 #include "fabform/model/wind.hpp"
 #include "scene/scene_overrides.hpp"
 #include "scene/toml_table_reader.hpp"
@@ -210,6 +211,35 @@ void read_drape(TableReader r, Scene* scene) {
   r.reject_unknown({"support"});
 }
 
+// [body.path]: the body's travel in load steps.
+void read_path(TableReader r, BodySpec* body) {
+  ToolPath& path = body->path;
+  path.steps = checked_int(r, "steps", r.integer("steps", 0, true), 1, 100000);
+  body->steps_where = r.locate_key("steps");
+  path.translation_m = r.vector<3>("translation_m", Eigen::Vector3d::Zero());
+  check_magnitude(r, "translation_m", path.translation_m.cwiseAbs().maxCoeff(), kMaxLength_m, "m");
+  path.rotation_deg = angles<3>(r, "rotation_deg");
+  body->pivot_given = r.has("pivot_m");
+  path.pivot_m = r.vector<3>("pivot_m", Eigen::Vector3d::Zero());
+  check_magnitude(r, "pivot_m", path.pivot_m.cwiseAbs().maxCoeff(), kMaxLength_m, "m");
+  std::string field;
+  if (const std::string why = path.invalid_reason(&field); !why.empty()) r.fail(field, why);
+  r.reject_unknown({"steps", "translation_m", "rotation_deg", "pivot_m"});
+}
+
+// Every travelling body moves in the same load steps.
+void check_steps_agree(const Scene& scene) {
+  const BodySpec* first = nullptr;
+  for (const BodySpec& body : scene.bodies) {
+    if (!body.path.moves()) continue;
+    if (!first) first = &body;
+    else if (body.path.steps != first->path.steps)
+      throw InputError(body.steps_where, "body '" + body.name + "' travels in " + std::to_string(body.path.steps) +
+                                             " steps, body '" + first->name + "' in " +
+                                             std::to_string(first->path.steps) + ": every path takes the same steps");
+  }
+}
+
 BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t index) {
   BodySpec body;
   body.where = r.where();
@@ -228,7 +258,8 @@ BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t ind
     r.fail("friction", "Coulomb's coefficient must be in [0, 10] (0: frictionless)");
   std::string field;
   if (const std::string why = body.placement.invalid_reason(&field); !why.empty()) r.fail(field, why);
-  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m", "friction"});
+  if (r.has("path")) read_path(r.table("path", false), &body);
+  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m", "friction", "path"});
   return body;
 }
 
@@ -309,6 +340,30 @@ ConstraintSpec read_constraint(TableReader r, const FabricSpec& fabric) {
     r.fail("axes", "must name each of x, y, z at most once, e.g. \"xyz\" or \"xy\"");
   r.reject_unknown({"nodes", "node", "nearest_m", "box_m", "axes"});
   return constraint;
+}
+
+void read_clamp(TableReader r, Scene* scene) {
+  ClampSpec& c = scene->clamp;
+  c.on = true;
+  c.where = r.where();
+  if (r.has("width_m")) {
+    for (const char* other : {"nodes", "node", "nearest_m", "box_m"})
+      if (r.has(other)) throw InputError(c.where, "give one of width_m (a frame round the edge) or a node set, not both");
+    c.nodes.kind = NodeSetSpec::Kind::frame;
+    c.nodes.width_m = r.number("width_m", 0.0, true);
+    if (!(c.nodes.width_m >= 0.0 && c.nodes.width_m <= kMaxLength_m))
+      r.fail("width_m", "must be between 0 (the edge's nodes alone) and " + number_text(kMaxLength_m) + " m");
+    c.nodes_text = "frame " + number_text(c.nodes.width_m) + " m wide";
+  } else {
+    c.nodes = read_selector(r, scene->fabric, &c.nodes_text);
+  }
+  c.force_N = r.number("force_N", 0.0, true);
+  c.friction = r.number("friction", 0.0, true);
+  std::string field;
+  // The creep length is the solver's; here only the clamp's own values are checked.
+  if (const std::string why = ClampOptions{c.force_N, c.friction, 1.0}.invalid_reason(&field); !why.empty())
+    r.fail(field, why);
+  r.reject_unknown({"width_m", "nodes", "node", "nearest_m", "box_m", "force_N", "friction"});
 }
 
 void read_initial(TableReader r, Scene* scene) {
@@ -409,13 +464,22 @@ std::size_t skip_blanks(std::string_view line, std::size_t at) {
   return at;
 }
 
-// Follows [table] and [[array]] headers; `prefix` becomes "fabric" or "body.1".
+// Follows [table] and [[array]] headers; `prefix` becomes "fabric", "body.1" or, for a table
+// inside an array's element ([body.path]), "body.1.path".
 void follow_header(std::string_view line, std::map<std::string, int>* arrays, std::string* prefix) {
   std::size_t at = skip_blanks(line, 0);
   if (at >= line.size() || line[at] != '[') return;
   const bool array = at + 1 < line.size() && line[at + 1] == '[';
   const std::string name = bare_key_at(line, skip_blanks(line, at + (array ? 2 : 1)));
-  *prefix = array ? name + "." + std::to_string((*arrays)[name]++) : name;
+  if (array) {
+    *prefix = name + "." + std::to_string((*arrays)[name]++);
+    return;
+  }
+  const std::string first = name.substr(0, name.find('.'));
+  const auto element = arrays->find(first);
+  *prefix = element == arrays->end() || first == name
+                ? name
+                : first + "." + std::to_string(element->second - 1) + name.substr(first.size());
 }
 
 // The dotted key of a `key = value` line, or "" for any other line.
@@ -467,12 +531,14 @@ Scene read_scene(const toml::table& root, const std::string& path,
   read_fabric(fabric, &scene);
   const auto bodies = r.tables("body");
   for (std::size_t b = 0; b < bodies.size(); ++b) scene.bodies.push_back(read_body(bodies[b], path, b));
+  check_steps_agree(scene);
   for (auto& c : r.tables("constraint")) scene.constraints.push_back(read_constraint(c, scene.fabric));
   if (r.has("gravity")) read_gravity(r.table("gravity", false), &scene);
   if (r.has("shear")) read_shear(r.table("shear", false), &scene);
   if (r.has("bending")) read_bending(r.table("bending", false), &scene);
   if (r.has("wind")) read_wind(r.table("wind", false), &scene);
   if (r.has("pressure")) read_pressure(r.table("pressure", false), &scene);
+  if (r.has("clamp")) read_clamp(r.table("clamp", false), &scene);
   if (r.has("drape")) read_drape(r.table("drape", false), &scene);
   if (scene.fabric.mesh == FabricSpec::Mesh::triangular && !scene.shear.on)
     fabric.fail("mesh", "a triangular mesh has diagonal springs: name their bias table in a [shear] table "
@@ -487,8 +553,11 @@ Scene read_scene(const toml::table& root, const std::string& path,
                             "), which depends on the fabric's velocity (seed 004): only solver dynamic models it, not " +
                             scene.solver.name);
   refuse_friction_in_relax(scene, solver);
+  if (scene.clamp.on && scene.solver.name != "newton")
+    solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
+                            "), whose friction only newton models, not " + scene.solver.name);
   read_output(r.table("output", false), &scene);
-  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "pressure", "drape",
+  r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "pressure", "clamp", "drape",
                     "initial", "solver", "output"});
   return scene;
 }

@@ -60,7 +60,7 @@ void release_pulling_nodes(const Model& model, const std::vector<Eigen::Vector3d
 
 // R with the friction lagged for this iteration added where a body holds a node.
 std::vector<Eigen::Vector3d> with_friction(const Model& model, std::vector<Eigen::Vector3d> forces,
-                                           const LaggedFriction& friction, const std::vector<Eigen::Vector3d>& x) {
+                                           const CoulombFriction& friction, const std::vector<Eigen::Vector3d>& x) {
   if (friction.empty()) return forces;
   for (int k = 0; k < model.node_count(); ++k)
     forces[static_cast<std::size_t>(k)] += friction.force_at(model, x, k, x[static_cast<std::size_t>(k)]);
@@ -82,7 +82,7 @@ class NewtonStep {
       : model_(model),
         state_(state),
         options_(options),
-        creep_m_(model.has_friction() ? friction_creep_m(model, options.friction_creep) : 0.0),
+        creep_m_(model.has_friction() ? friction_creep_m(model.fabric, options.friction_creep) : 0.0),
         mu_(state.regularization > 0.0 ? state.regularization : options.regularization) {}
 
   /// One Newton step from the current state, whose ‖V‖∞ is `residual`; false when no step along
@@ -90,7 +90,7 @@ class NewtonStep {
   bool take(double residual) {
     const std::vector<Eigen::Vector3d> stored = node_forces(model_, state_.x);
     release_pulling_nodes(model_, stored, state_);
-    const LaggedFriction friction = lag_friction(model_, state_, stored, creep_m_);
+    const CoulombFriction friction = lag_friction(model_, state_, stored, creep_m_);
     const std::vector<Eigen::Vector3d> forces = with_friction(model_, stored, friction, state_.x);
     const FreeDirections directions = free_directions(model_, state_.contact);
     if (directions.used == 0) return false;
@@ -140,7 +140,7 @@ class NewtonStep {
   // Backtracking from the full step. Near the solution the energy's change falls below its
   // rounding (~1e-11 of the total); there a step is judged by whether it lowers ‖V‖∞ instead.
   std::optional<double> line_search(const std::vector<Eigen::Vector3d>& steps,
-                                    const std::vector<Eigen::Vector3d>& forces, const LaggedFriction& friction,
+                                    const std::vector<Eigen::Vector3d>& forces, const CoulombFriction& friction,
                                     double residual) {
     // Π's change, each term's its own way; the energy the fabric stores sets its rounding.
     const EnergyBaseline baseline = energy_baseline(model_, state_.x);

@@ -48,6 +48,13 @@ bool record_iteration(Summary& summary, const IterationRecord& record, int worst
   return true;
 }
 
+int total_iterations(const std::vector<IterationRecord>& history) {
+  int total = 0;
+  for (std::size_t i = 0; i < history.size(); ++i)
+    if (i + 1 == history.size() || history[i + 1].step != history[i].step) total += history[i].iteration;
+  return total;
+}
+
 std::string stop_message(const Summary& s) {
   std::ostringstream text;
   text.precision(3);

@@ -37,7 +37,7 @@ Summary sample_summary() {
   s.tolerance_N = 1e-6;
   s.seconds = 1.25;
   s.worst_node = 3;
-  s.history = {{0, 2.0, 0.0, 0}, {1, 1.0, 0.5, 2}, {2, 0.5, 1.25, 3}};
+  s.history = {{0, 2.0, 0.0, 0, 1}, {1, 1.0, 0.5, 2, 1}, {0, 0.5, 1.25, 3, 2}};  // two load steps
   return s;
 }
 
@@ -77,6 +77,7 @@ TEST(Checkpoint, RoundTripIsBitExact) {
     ASSERT_EQ(c.summary.history.size(), expected.history.size());
     EXPECT_EQ(c.summary.history.back().residual_N, 0.5);
     EXPECT_EQ(c.summary.history.back().contact_nodes, 3);
+    EXPECT_EQ(c.summary.history.back().step, 2);
   }
 }
 
@@ -106,9 +107,9 @@ TEST(Checkpoint, AnotherModelsCheckpointIsRefused) {
 // A checkpoint of the format before friction's anchors is named as such, not as foreign.
 TEST(Checkpoint, EarlierFormatIsNamed) {
   std::string bytes = checkpoint_bytes(sample_state(false), sample_summary());
-  bytes.replace(0, std::string("fabform checkpoint 2").size(), "fabform checkpoint 1");
+  bytes.replace(0, std::string("fabform checkpoint 3").size(), "fabform checkpoint 2");
   const std::string error = error_of(bytes);
-  EXPECT_NE(error.find("another checkpoint format (fabform checkpoint 1; this fabform reads format 2)"),
+  EXPECT_NE(error.find("another checkpoint format (fabform checkpoint 2; this fabform reads format 3)"),
             std::string::npos)
       << error;
 }

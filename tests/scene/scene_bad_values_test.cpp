@@ -82,14 +82,17 @@ Section fabric_section(Base base) {
 }
 
 // The drape test's sections, in the circles' scenes: the dome is the support; the circle bends
-// with seed 004's bend springs under a pressure, the arc mesh with hinges and is blown by seed 004's wind (its
+// with seed 004's bend springs under a pressure, a quarter of it in a blank holder (its solver
+// is newton, the only one that models the holder), the arc mesh with hinges and is blown by seed 004's wind (its
 // solver is dynamic, the only one that models wind).
 std::vector<Section> drape_sections(Base base) {
   if (base != Base::circle && base != Base::arc) return {};
   std::vector<Section> sections = {{"shear", "[shear]", {{"material", "\"../materials/synthetic/linear-500.csv\""}}}};
   if (base == Base::circle)
     sections.insert(sections.end(), {{"bending", "[bending]", {{"stiffness_N_m", "0.5"}}},
-                                     {"pressure", "[pressure]", {{"pressure_Pa", "100.0"}}}});
+                                     {"pressure", "[pressure]", {{"pressure_Pa", "100.0"}}},
+                                     {"clamp", "[clamp]",
+                                      {{"box_m", "[[0.0, 0.0], [0.05, 0.05]]"}, {"force_N", "10.0"}, {"friction", "0.3"}}}});
   else
     sections.insert(sections.end(), {{"bending", "[bending]", {{"rigidity_Nm", "5e-5"}}},
                                      {"wind", "[wind]", {{"velocity_m_s", "[1.0, 0.0, -0.5]"}, {"coefficient_N_s_m3", "0.5"}}}});
@@ -112,6 +115,9 @@ SceneText base_scene(Base base) {
              {"rotation_deg", "[0.0, 0.0, 90.0]"},
              {"translation_m", "[0.05, 0.05, 0.0]"},
              {"friction", "0.0"}}},
+           {"body.0.path", "[body.path]",
+            {{"steps", "4"}, {"translation_m", "[0.0, 0.0, 0.004]"}, {"rotation_deg", "[0.0, 0.0, 10.0]"},
+             {"pivot_m", "[0.05, 0.05, 0.0]"}}},
            {"constraint.0", "[[constraint]]", {{"nodes", "\"perimeter\""}, {"axes", "\"xyz\""}}},
            {"constraint.1", "[[constraint]]", {{"node", "[2, 2]"}, {"axes", "\"z\""}}},
            {"constraint.2", "[[constraint]]", {{"nearest_m", "[0.025, 0.025]"}, {"axes", "\"xy\""}}},
@@ -119,7 +125,7 @@ SceneText base_scene(Base base) {
            {"gravity", "[gravity]", {{"acceleration_m_s2", "9.81"}}},
            initial_section(base),
            {"solver", "[solver]",
-            {{"name", base == Base::arc ? "\"dynamic\"" : "\"relax\""},
+            {{"name", base == Base::arc ? "\"dynamic\"" : base == Base::circle ? "\"newton\"" : "\"relax\""},
              {"tolerance_N", "1e-3"},
              {"max_iterations", "1000"},
              {"C", "2.0"},
@@ -269,6 +275,16 @@ const std::vector<KeyRow>& key_table() {
       {"body.0.translation_m",           T::vec3,      lift, A,   A,  A,   B,   _,    "body.0", {}},
       {"body.0.friction",                T::number,    arc,  A,   R,  A,   R,   _,    "",
        {{"cap", "10.0", A, kSame}, {"beyond_cap", "10.1", R, kSame}}},
+      // The body travels 4 mm and turns 10° in four load steps; without a path it stays put.
+      {"body.0.path",                    T::only_extras, lift, _, _,  _,   _,   _,    "",
+       {{"missing", kRemove, A, kSame}}},
+      {"body.0.path.steps",              T::integer,   lift, R,   R,  R,   R,   _,    "",
+       {{"one", "1", A, kSame}, {"cap", "100000", A, kSame}, {"beyond_cap", "100001", R, kSame}}},
+      {"body.0.path.translation_m",      T::vec3,      lift, A,   A,  A,   R,   _,    "",
+       {{"beyond_1e6_m", "[0.0, 0.0, 2e6]", R, kSame}}},
+      {"body.0.path.rotation_deg",       T::vec3,      lift, A,   A,  A,   R,   _,    "",
+       {{"beyond_a_turn", "[0.0, 361.0, 0.0]", R, kSame}}},
+      {"body.0.path.pivot_m",            T::vec3,      lift, A,   A,  A,   R,   _,    "", {}},
       // Seed 003's relaxation has no stick or slip.
       {"body.0.friction",                T::only_extras, lift, _, _,  _,   _,   _,    "",
        {{"with_relax", "0.3", R, "solver.name"}, {"none_with_relax", "0.0", A, kSame}}},
@@ -320,6 +336,24 @@ const std::vector<KeyRow>& key_table() {
       // A pressure needs a clamped blank: its edge held in x, y and z.
       {"constraint.0.axes",              T::only_extras, circle, _, _, _,  _,   _,    "",
        {{"edge_free_under_pressure", "\"xy\"", B, "pressure"}}},
+      {"clamp",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
+      // A region with no node is no holder (a box beyond the fabric, or of no size).
+      {"clamp.box_m",                    T::box,       circle, _, A,  B,   A,   _,    "clamp",
+       {{"missing", kRemove, R, "clamp"}, {"off_the_fabric", "[[0.2, 0.2], [0.3, 0.3]]", B, "clamp"},
+        {"and_a_frame", "[[0.0, 0.0], [0.05, 0.05]]\nwidth_m = 0.01", R, "clamp"}}},
+      // The holder's other selectors are a constraint's, swept there; its frame (width_m) is
+      // checked in scene_toml_test.cpp, as the base holds one selector.
+      {"clamp.nodes",                    T::only_extras, circle, _, _, _,  _,   _,    "", {}},
+      {"clamp.node",                     T::only_extras, circle, _, _, _,  _,   _,    "", {}},
+      {"clamp.nearest_m",                T::only_extras, circle, _, _, _,  _,   _,    "", {}},
+      {"clamp.width_m",                  T::only_extras, circle, _, _, _,  _,   _,    "", {}},
+      {"clamp.force_N",                  T::number,    circle, R, R,  A,   R,   _,    "",
+       {{"cap", "1e6", A, kSame}, {"beyond_cap", "1.1e6", R, kSame}}},
+      {"clamp.friction",                 T::number,    circle, R, R,  A,   R,   _,    "",
+       {{"cap", "10.0", A, kSame}, {"beyond_cap", "10.1", R, kSame}}},
+      // Only newton models the holder.
+      {"solver.name",                    T::only_extras, circle, _, _, _,  _,   _,    "",
+       {{"relax_with_a_clamp", "\"relax\"", R, kSame}, {"dynamic_with_a_clamp", "\"dynamic\"", R, kSame}}},
       {"drape",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
       // No support: a pin test, A_disc = 0.
       {"drape.support",                  T::text,      circle, A, _,  _,   _,   R,    "",
@@ -524,12 +558,14 @@ std::vector<Case> all_cases() {
 // ---------------------------------------------------------------------------------------------
 // Applying a case to the base scene
 
-// A section's name is KEY or, in an array, KEY.N.
-bool is_section_of(const std::string& section, const std::string& key) {
+// A section's name is KEY or, in an array, KEY.N; with `nested`, also a table inside one of
+// the array's elements (KEY.N.path), which goes where its element goes.
+bool is_section_of(const std::string& section, const std::string& key, bool nested = true) {
   if (section == key) return true;
   if (section.rfind(key + ".", 0) != 0) return false;
   const std::string rest = section.substr(key.size() + 1);
-  return !rest.empty() && rest.find_first_not_of("0123456789") == std::string::npos;
+  const std::string index = nested ? rest.substr(0, rest.find('.')) : rest;
+  return !index.empty() && index.find_first_not_of("0123456789") == std::string::npos;
 }
 
 bool names_a_section(const SceneText& scene, const std::string& key) {
@@ -550,7 +586,7 @@ void edit_section(SceneText* scene, const Case& c) {
   }
   if (c.edit == Edit::header) {
     for (auto& s : sections)
-      if (is_section_of(s.name, c.key)) s.header = c.value;
+      if (is_section_of(s.name, c.key, false)) s.header = c.value;
     return;
   }
   sections.erase(std::remove_if(sections.begin(), sections.end(),
@@ -694,7 +730,8 @@ TEST(SceneBadValueTable, ListsEveryKeyTheParserKnows) {
       {Base::lift, ""},          {Base::lift, "scene"},  {Base::lift, "fabric"}, {Base::lift, "body.0"},
       {Base::lift, "constraint.0"}, {Base::lift, "initial"}, {Base::lift, "solver"}, {Base::lift, "output"},
       {Base::wrap, "initial"},   {Base::circle, "fabric"}, {Base::arc, "fabric"},  {Base::circle, "shear"},
-      {Base::circle, "bending"}, {Base::arc, "bending"},  {Base::circle, "drape"}};
+      {Base::circle, "bending"}, {Base::arc, "bending"},  {Base::circle, "drape"},
+      {Base::lift, "body.0.path"}, {Base::circle, "clamp"}};
   for (const auto& [base, section] : sections) {
     const std::set<std::string> known = known_keys(base_scene(base), section);
     EXPECT_FALSE(known.empty()) << "no list of known keys for section '" << section << "'";

@@ -71,10 +71,10 @@ TEST(LoadScene, ReadsTheDynamicSolversKeys) {
 
 TEST(LoadScene, ShippedScenesLoad) {
   for (const char* file : {"scenes/mold.toml", "scenes/torso.toml", "scenes/torso_frictionless.toml",
-                           "scenes/vacuum.toml"}) {
+                           "scenes/vacuum.toml", "scenes/cup.toml"}) {
     const Scene scene = load_scene(test::source_path(file));
     EXPECT_FALSE(scene.bodies.empty()) << file;
-    EXPECT_FALSE(scene.constraints.empty()) << file;
+    EXPECT_TRUE(!scene.constraints.empty() || scene.clamp.on) << file << ": nothing holds the fabric";
   }
 }
 
@@ -154,6 +154,51 @@ INSTANTIATE_TEST_SUITE_P(
         if (c == '.') c = '_';
       return name;
     });
+
+// A blank holder gripping a frame round the edge: its width, force and friction, held for newton.
+TEST(LoadScene, ReadsAClampFrame) {
+  std::string text = kMinimal;
+  text.replace(text.find("[solver]\n"), 9, "[clamp]\nwidth_m = 0.02\nforce_N = 40\nfriction = 0.3\n[solver]\nname = \"newton\"\n");
+  test::TempDir dir;
+  const Scene scene = load_scene(dir.write("scene.toml", text));
+  ASSERT_TRUE(scene.clamp.on);
+  EXPECT_EQ(scene.clamp.nodes.kind, NodeSetSpec::Kind::frame);
+  EXPECT_EQ(scene.clamp.nodes.width_m, 0.02);
+  EXPECT_EQ(scene.clamp.force_N, 40.0);
+  EXPECT_EQ(scene.clamp.friction, 0.3);
+}
+
+TEST(LoadScene, AClampFrameIsOneRegion) {
+  std::string text = kMinimal;
+  text.replace(text.find("[solver]\n"), 9,
+               "[clamp]\nwidth_m = -0.02\nforce_N = 40\nfriction = 0.3\n[solver]\nname = \"newton\"\n");
+  InputError e = load_error(text);
+  EXPECT_EQ(e.where().key, "clamp.width_m") << e.what();
+  EXPECT_EQ(e.where().line, 9) << e.what();
+  text.replace(text.find("width_m = -0.02"), 15, "width_m = 0.02\nnodes = \"perimeter\"");
+  e = load_error(text);
+  EXPECT_EQ(e.where().key, "clamp") << e.what();
+  EXPECT_NE(std::string(e.what()).find("not both"), std::string::npos) << e.what();
+}
+
+// A syntax error inside a body's path names the key with the body's index.
+TEST(LoadScene, SyntaxErrorInABodysPathNamesItsIndex) {
+  const std::string text = std::string(kMinimal) +
+                           "[[body]]\nmesh = \"a.obj\"\nunits = \"mm\"\n[[body]]\nmesh = \"b.obj\"\nunits = \"mm\"\n"
+                           "[body.path]\nsteps = 99999999999999999999\n";
+  const InputError e = load_error(text);
+  EXPECT_EQ(e.where().key, "body.1.path.steps") << e.what();
+  EXPECT_EQ(e.where().line, 17) << e.what();
+}
+
+TEST(LoadScene, TravellingBodiesShareTheirSteps) {
+  const std::string text = std::string(kMinimal) +
+                           "[[body]]\nmesh = \"a.obj\"\nunits = \"mm\"\n[body.path]\nsteps = 4\ntranslation_m = [0, 0, 0.01]\n"
+                           "[[body]]\nmesh = \"b.obj\"\nunits = \"mm\"\n[body.path]\nsteps = 5\nrotation_deg = [0, 0, 30]\n";
+  const InputError e = load_error(text);
+  EXPECT_EQ(e.where().key, "body.1.path.steps") << e.what();
+  EXPECT_NE(std::string(e.what()).find("same steps"), std::string::npos) << e.what();
+}
 
 TEST(LoadScene, MissingRequiredKeyNamesIt) {
   std::string text = kMinimal;

@@ -14,6 +14,7 @@
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
+#include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fabform {
@@ -24,27 +25,6 @@ constexpr double kRadius_m = 0.05;
 constexpr double kSpacing_m = kPi * kRadius_m / 60.0;  // 60 springs round the wrap
 constexpr int kTailSprings = 20;
 constexpr double kWidth_m = 0.02;
-
-// A cylinder of radius r along y, from y = −0.1 to 0.2 m, closed by its end caps, outward.
-TriangleMesh cylinder(double r, int segments) {
-  TriangleMesh mesh;
-  for (const double y : {-0.1, 0.2})
-    for (int s = 0; s < segments; ++s) {
-      const double phi = 2.0 * kPi * s / segments;
-      mesh.vertices.emplace_back(r * std::cos(phi), y, r * std::sin(phi));
-    }
-  mesh.vertices.emplace_back(0.0, -0.1, 0.0);
-  mesh.vertices.emplace_back(0.0, 0.2, 0.0);
-  const int front = 2 * segments, back = front + 1;
-  for (int s = 0; s < segments; ++s) {
-    const int a = s, b = (s + 1) % segments, c = a + segments, d = b + segments;
-    mesh.triangles.push_back({a, c, d});
-    mesh.triangles.push_back({a, d, b});
-    mesh.triangles.push_back({front, a, b});
-    mesh.triangles.push_back({back, d, c});
-  }
-  return mesh;
-}
 
 // Arc length s along the band from end A (s = 0) to its point: up the left tail, over the top
 // from φ = π to 0, down the right tail.
@@ -76,7 +56,7 @@ struct Capstan {
       if (band.i_of(k) == springs) start[i].z() -= pull_m;
     }
     std::vector<RigidBody> bodies;
-    bodies.emplace_back("cylinder", cylinder(kRadius_m, 2048), friction);
+    bodies.emplace_back("cylinder", test::cylinder_along_y(kRadius_m, -0.1, 0.2, 2048), friction);
     return Model{band, test::linear_table(200.0), test::linear_table(200.0), locks, std::move(bodies), start};
   }
 

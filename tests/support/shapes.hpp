@@ -8,6 +8,28 @@
 
 namespace fabform::test {
 
+/// A closed cylinder of radius r about the y axis, from y0 to y1, with end caps, outward.
+inline TriangleMesh cylinder_along_y(double r, double y0, double y1, int segments) {
+  const double pi = std::acos(-1.0);
+  TriangleMesh mesh;
+  for (const double y : {y0, y1})
+    for (int s = 0; s < segments; ++s) {
+      const double phi = 2.0 * pi * s / segments;
+      mesh.vertices.emplace_back(r * std::cos(phi), y, r * std::sin(phi));
+    }
+  mesh.vertices.emplace_back(0.0, y0, 0.0);
+  mesh.vertices.emplace_back(0.0, y1, 0.0);
+  const int front = 2 * segments, back = front + 1;
+  for (int s = 0; s < segments; ++s) {
+    const int a = s, b = (s + 1) % segments, c = a + segments, d = b + segments;
+    mesh.triangles.push_back({a, c, d});
+    mesh.triangles.push_back({a, d, b});
+    mesh.triangles.push_back({front, a, b});
+    mesh.triangles.push_back({back, d, c});
+  }
+  return mesh;
+}
+
 /// A closed UV sphere, outward-oriented (counter-clockwise seen from outside).
 inline TriangleMesh uv_sphere(const Eigen::Vector3d& centre, double radius, int rings, int segments) {
   const double pi = 3.14159265358979323846;

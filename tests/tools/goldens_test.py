@@ -54,6 +54,13 @@ class ReadHistory(unittest.TestCase):
         self.assertEqual(its, [0, 1])
         self.assertEqual(res, [1.5, 0.25])
 
+    def test_load_steps_are_laid_end_to_end(self):
+        its, res = pc.read_history(self.write(
+            "step,iteration,residual_N,seconds,contact_nodes\n1,0,2.0,0,0\n1,1,0.5,0,0\n1,2,0.1,0,0\n"
+            "2,0,3.0,0,0\n2,1,0.2,0,0\n3,0,0.1,0,0\n"))
+        self.assertEqual(its, [0, 1, 2, 2, 3, 3])
+        self.assertEqual(res, [2.0, 0.5, 0.1, 3.0, 0.2, 0.1])
+
     def test_missing_column_names_the_file_and_the_column(self):
         path = self.write("iteration,seconds\n0,0\n")
         with self.assertRaises(pc.InputError) as caught:

@@ -22,6 +22,9 @@ struct Placement {
 /// Metres per unit for "m", "cm", "mm", "in"; false for anything else.
 bool parse_length_unit(const std::string& unit, double* metres_per_unit);
 
+/// The rotation of `degrees` about x, then y, then z (proper: no reflection).
+Eigen::Matrix3d rotation_from_degrees(const Eigen::Vector3d& degrees);
+
 /// Places every vertex of a mesh. Rotations are proper (no reflection), so orientation is kept.
 TriangleMesh place(const TriangleMesh& mesh, const Placement& placement);
 

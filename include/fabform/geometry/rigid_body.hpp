@@ -50,9 +50,19 @@ class RigidBody {
   /// Whether the segment crosses the surface at all, in either direction.
   bool segment_crosses(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
 
+  /// Moves the body rigidly to `pose` (a rotation and translation of its mesh as placed): a
+  /// tool travelling along its path. Every query above answers for the body where it now is;
+  /// the BVH stays as built, queries are carried into the placed frame and back.
+  void move_to(const Eigen::Isometry3d& pose);
+  /// Where the body is, relative to its placement (the identity until it moves).
+  const Eigen::Isometry3d& pose() const { return pose_; }
+  /// The mesh where the body now is (the placed mesh moved by pose()), for output.
+  TriangleMesh posed_mesh() const;
+
   const std::string& name() const { return name_; }
   /// Coulomb's μ between the fabric and this body's surface (0: frictionless).
   double friction() const { return friction_; }
+  /// The mesh as placed by the scene, before any travel (see posed_mesh()).
   const TriangleMesh& mesh() const { return mesh_; }
   const BoundingBox& box() const { return box_; }
   /// Volume enclosed, positive when the faces are oriented outward (meaningful when closed).
@@ -67,6 +77,10 @@ class RigidBody {
   Eigen::Vector3d feature_normal(int triangle, TriangleFeature feature) const;
   bool on_rim(int triangle, TriangleFeature feature) const;
   SurfacePoint surface_point_on(int triangle, const Eigen::Vector3d& p) const;
+  std::optional<SurfacePoint> closest_within_placed(const Eigen::Vector3d& p, double radius) const;
+  std::optional<SurfacePoint> first_entry_placed(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
+  Eigen::Vector3d to_placed(const Eigen::Vector3d& p) const { return moved_ ? Eigen::Vector3d(inverse_ * p) : p; }
+  SurfacePoint to_posed(SurfacePoint s) const;
 
   std::string name_;
   TriangleMesh mesh_;
@@ -78,6 +92,9 @@ class RigidBody {
   std::vector<std::array<bool, 3>> edge_on_rim_;  // per triangle: edge used by this face only
   std::vector<unsigned char> vertex_on_rim_;
   std::unique_ptr<EmbreeScene> bvh_;
+  Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d inverse_ = Eigen::Isometry3d::Identity();
+  bool moved_ = false;  // a body that never moves answers without the two transforms
 };
 
 }  // namespace fabform

@@ -12,6 +12,7 @@
 #include "fabform/fabric/fabric.hpp"
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/rigid_body.hpp"
+#include "fabform/geometry/tool_path.hpp"
 #include "fabform/material/tension_table.hpp"
 #include "fabform/model/term.hpp"
 
@@ -33,6 +34,7 @@ struct Model {
   std::optional<TensionTable> shear = {};   // the shear springs' table, when the fabric has them
   std::optional<TensionTable> bend = {};    // the bend springs' table, when the fabric has them
   TermList terms;                           // every term acting on the fabric, springs first
+  std::vector<ToolPath> paths;              // per body: its travel (none: it stays put)
 
   /// The table a kind of spring follows; the model builder makes sure the fabric's kinds have one.
   const TensionTable& table(SpringKind kind) const {
@@ -54,6 +56,8 @@ struct Model {
   bool resists_bending() const;
   /// Whether some body holds the fabric by friction.
   bool has_friction() const;
+  /// K, the load steps in which the bodies travel; 0 when none moves.
+  int load_steps() const;
 };
 
 /// R at `node` with the node moved to `at` and every other node where `x` has it: the sum of

@@ -1,9 +1,11 @@
 #pragma once
 // Writes a run's results into a folder: result.json (the summary other tools read, with the
 // inputs that made it), convergence.csv (the history), fabric.obj (the formed fabric),
-// fabric.vtk (ParaView, with per-node warp and weft strain, contact flag and residual),
-// bodies.obj (the bodies as placed, in metres; not in checkpoints) and checkpoint.bin (the
-// state to resume from) unless the run converged or broke. The folder is
+// fabric.vtk (ParaView, with per-node warp and weft strain, contact flag, residual and draw-in),
+// bodies.obj (the bodies where the run left them, in metres; not in checkpoints) and
+// checkpoint.bin (the state to resume from) unless the run converged or broke. A run in load
+// steps adds each finished step: fabric_step_K.vtp and bodies_step_K.vtp (VTK XML), the
+// series fabric_steps.pvd that ParaView plays, and the step's figures under result.json's "steps". The folder is
 // replaced at once (results_folder.hpp), so it never holds a half-written or mixed set.
 #include <string>
 #include <vector>
@@ -17,6 +19,14 @@
 
 namespace fabform {
 
+/// A finished load step's results: its entry in result.json's "steps" (JSON text) and its files.
+struct StepResult {
+  int step = 0;
+  std::string json;
+  std::string fabric_vtp;
+  std::string bodies_vtp;
+};
+
 struct RunRecord {
   const Scene& scene;
   const Model& model;
@@ -27,7 +37,15 @@ struct RunRecord {
   std::vector<std::string> warnings;
   double wall_seconds = 0.0;
   int threads = 1;
+  const std::vector<StepResult>* steps = nullptr;  // the finished load steps, in order
 };
+
+/// The results of load step `step`, `run` being its rest (its summary the step's own).
+StepResult step_result(const RunRecord& run, int step);
+
+/// The finished steps a results folder holds (a resumed run's), read back from its result.json
+/// and step files; throws InputError naming what is missing or damaged.
+std::vector<StepResult> read_step_results(const std::string& dir);
 
 /// Creates or replaces the folder; throws std::runtime_error naming the path if it cannot write.
 void write_results(const std::string& dir, const RunRecord& run);

@@ -24,6 +24,8 @@ class RunMonitor {
 
   /// The solver's observer.
   void observe(const IterationRecord& record);
+  /// Writes a checkpoint now (a load step has ended: resuming goes on from the next).
+  void checkpoint();
 
   /// The newest state kept whose residual was finite, and its iteration.
   const SolverState& last_good_state() const { return last_good_; }
@@ -31,7 +33,7 @@ class RunMonitor {
 
  private:
   using Clock = std::chrono::steady_clock;
-  bool checkpoint_due(const IterationRecord& record) const;
+  bool checkpoint_due() const;
   void keep_good_state(const IterationRecord& record);
 
   const SolverState& state_;
@@ -39,7 +41,7 @@ class RunMonitor {
   CheckpointSpec checkpoints_;
   Publisher publish_;
   Progress* progress_;
-  int last_checkpoint_iteration_;
+  int iterations_since_checkpoint_ = 0;
   Clock::time_point last_checkpoint_time_ = Clock::now();
   SolverState last_good_;
   int last_good_iteration_ = -1;

@@ -11,6 +11,7 @@
 #include "fabform/fabric/initial_shape.hpp"
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/placement.hpp"
+#include "fabform/geometry/tool_path.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/solver/solve.hpp"
 
@@ -24,6 +25,9 @@ struct BodySpec {
   Placement placement;
   double friction = 0.0;  // Coulomb's μ between the fabric and this body; 0: frictionless
   SourceLocation friction_where;
+  ToolPath path;               // [body.path]: its travel in load steps (steps 0: it stays put)
+  bool pivot_given = false;    // else the turn is about the placed mesh's bounding box's centre
+  SourceLocation steps_where;  // path.steps, for messages
   SourceLocation where;
 };
 
@@ -82,6 +86,17 @@ struct PressureSpec {
   SourceLocation where;
 };
 
+// [clamp]: a blank holder gripping a frame round the blank's edge (width_m) or a node set, with
+// its whole normal force and the friction of its faces (clamp_frame.hpp).
+struct ClampSpec {
+  bool on = false;
+  NodeSetSpec nodes;
+  std::string nodes_text;  // the region as written, for reports
+  double force_N = 0.0;
+  double friction = 0.0;
+  SourceLocation where;
+};
+
 // [drape]: the scene is a drape test of a circular fabric; its result gives the drape
 // coefficient, with the named body as the support disc (none: over a pin, A_disc = 0).
 struct DrapeSpec {
@@ -109,6 +124,7 @@ struct Scene {
   BendingSpec bending;
   WindSpec wind;
   PressureSpec pressure;
+  ClampSpec clamp;
   DrapeSpec drape;
   InitialShape initial;
   SourceLocation initial_where;

@@ -25,7 +25,7 @@ struct NewtonOptions {
   int max_backtracks = 60;   // step halvings before the line search is declared stalled
   // Friction's creep length ε as a fraction of the mean spring length: a node that slipped
   // less than ε from where it landed is stuck (friction smoothed as in incremental potential
-  // contact, lagged_friction.hpp).
+  // contact, coulomb_friction.hpp).
   double friction_creep = 1e-2;
 
   /// Why the options cannot be used, or "" when they can; `field` gets the option's name.

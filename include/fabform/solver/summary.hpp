@@ -15,10 +15,11 @@ enum class Termination { converged, not_converged, numerical_failure, interrupte
 std::string to_string(Termination termination);
 
 struct IterationRecord {
-  int iteration = 0;
+  int iteration = 0;  // counted within its load step
   double residual_N = 0.0;  // ‖V‖∞ after the iteration
   double seconds = 0.0;     // since the solve started
   int contact_nodes = 0;
+  int step = 0;  // the load step (load_steps.hpp) it belongs to; 0 for a run without travel
 };
 
 struct Summary {
@@ -50,6 +51,9 @@ Summary begin_summary(const std::string& solver, double tolerance_N, Summary res
 /// `worst_node` is where ‖V‖∞ is attained.
 bool record_iteration(Summary& summary, const IterationRecord& record, int worst_node,
                       int max_iterations, const IterationObserver& observer);
+
+/// The iterations a history holds: over its load steps, each step's last iteration.
+int total_iterations(const std::vector<IterationRecord>& history);
 
 /// The message for people that says why a run stopped with its termination.
 std::string stop_message(const Summary& summary);

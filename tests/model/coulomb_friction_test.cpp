@@ -1,4 +1,4 @@
-// The lagged friction potential (solver/lagged_friction.hpp) as every term is checked: its force
+// The smoothed Coulomb friction potential (coulomb_friction.hpp) as every term is checked: its force
 // is minus its energy's gradient and its stiffness minus its force's derivative, by central
 // differences, on nodes stuck (slip below the creep length ε) and sliding (beyond it); its force
 // is bounded by μλ and its stiffness positive semi-definite.
@@ -6,7 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "solver/lagged_friction.hpp"
+#include "fabform/model/coulomb_friction.hpp"
 #include "support/clamped_fabric.hpp"
 #include "support/term_checks.hpp"
 
@@ -19,7 +19,7 @@ constexpr double kCreep_m = 1e-4;
 struct Patch {
   Model model = test::clamped_fabric(2);
   Positions x = model.start;
-  LaggedFriction friction{contacts(), kCreep_m, model.node_count()};
+  CoulombFriction friction{contacts(), kCreep_m, model.node_count()};
 
   static std::vector<FrictionContact> contacts() {
     const Eigen::Vector3d n0 = Eigen::Vector3d(0.2, -0.3, 1.0).normalized();
@@ -38,22 +38,22 @@ struct Patch {
   }
 };
 
-TEST(LaggedFriction, ForceIsMinusTheGradientOfItsEnergy) {
+TEST(CoulombFriction, ForceIsMinusTheGradientOfItsEnergy) {
   const Patch p;
   test::expect_force_is_minus_the_gradient(p.model, p.friction, p.x, 1e-8, 1e-6);
 }
 
-TEST(LaggedFriction, StiffnessIsMinusTheDerivativeOfItsForce) {
+TEST(CoulombFriction, StiffnessIsMinusTheDerivativeOfItsForce) {
   const Patch p;
   test::expect_stiffness_is_minus_the_force_derivative(p.model, p.friction, p.x, 1e-9, 1e-5);
 }
 
-TEST(LaggedFriction, NodeChangesAreTheWholeEnergysChange) {
+TEST(CoulombFriction, NodeChangesAreTheWholeEnergysChange) {
   const Patch p;
   test::expect_node_changes_are_the_whole(p.model, p.friction, p.x, {0, 1}, Eigen::Vector3d(3e-5, -1e-5, 2e-6));
 }
 
-TEST(LaggedFriction, StuckNodeIsHeldBySpringSlidingNodeByMuLambda) {
+TEST(CoulombFriction, StuckNodeIsHeldBySpringSlidingNodeByMuLambda) {
   const Patch p;
   // Beyond ε the force is μλ against the slip; below, it grows as f1(y) = 2y/ε − y²/ε².
   EXPECT_NEAR(p.friction.force_at(p.model, p.x, 1, p.x[1]).norm(), 0.05, 1e-15);
@@ -64,7 +64,7 @@ TEST(LaggedFriction, StuckNodeIsHeldBySpringSlidingNodeByMuLambda) {
   EXPECT_NEAR(p.friction.force_at(p.model, p.x, 0, p.x[0]).dot(Patch::contacts()[0].normal), 0.0, 1e-17);
 }
 
-TEST(LaggedFriction, EnergyIsContinuousAtTheCreepLength) {
+TEST(CoulombFriction, EnergyIsContinuousAtTheCreepLength) {
   const Patch p;
   const FrictionContact c = Patch::contacts()[2];
   Positions below = p.x, above = p.x;
@@ -74,7 +74,7 @@ TEST(LaggedFriction, EnergyIsContinuousAtTheCreepLength) {
   EXPECT_NEAR(jump, 0.01 * 2e-9 * kCreep_m, 1e-9 * 0.01 * kCreep_m);
 }
 
-TEST(LaggedFriction, StiffnessIsPositiveSemiDefinite) {
+TEST(CoulombFriction, StiffnessIsPositiveSemiDefinite) {
   const Patch p;
   for (const double slip : {0.0, 0.5, 0.999, 1.0, 3.0}) {
     Positions x = p.x;
@@ -85,9 +85,9 @@ TEST(LaggedFriction, StiffnessIsPositiveSemiDefinite) {
   }
 }
 
-TEST(LaggedFriction, CreepIsAFractionOfTheMeanSpringLength) {
+TEST(CoulombFriction, CreepIsAFractionOfTheMeanSpringLength) {
   const Model model = test::clamped_fabric(4);  // 10 cm in 4: warp and weft springs of 2.5 cm
-  EXPECT_NEAR(friction_creep_m(model, 1e-3), 2.5e-5, 1e-18);
+  EXPECT_NEAR(friction_creep_m(model.fabric, 1e-3), 2.5e-5, 1e-18);
 }
 
 }  // namespace
