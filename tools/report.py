@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """The report of a run, for engineers: RUN_DIR/report.html with the summary, the strain maps
 (the formed fabric over the bodies, coloured by warp and by weft strain, with a colour bar),
-the area-weighted strain histogram, the convergence plot, what was modelled, the warnings and
-the inputs with their SHA-256. It opens in a browser from the folder, without a server.
+the area-weighted strain histogram, the convergence plot, for a run in load steps each step's
+figures (a table, and strain and draw-in against the tool's travel), what was modelled, the
+warnings and the inputs with their SHA-256. It opens in a browser from the folder, without a
+server.
 
 Why: an engineer judges a fit by looking at it. The pictures are rendered headless with
 matplotlib (Agg), the fabric from fabric.obj and fabric.vtk, the bodies from bodies.obj.
@@ -10,7 +12,8 @@ A run that did not converge says so at the top of the report and in its plot's t
 
 Usage: /usr/bin/python3 tools/report.py RUN_DIR
 Writes into RUN_DIR: report.html, strain_warp.png, strain_weft.png, strain_histogram.png,
-convergence.png and convergence.svg, each under a temporary name first, then renamed.
+convergence.png and convergence.svg (and steps.png for a run in load steps), each under a
+temporary name first, then renamed.
 Exits 2 with one line naming the file when an input is missing or malformed.
 """
 import html
@@ -150,6 +153,49 @@ def histogram_picture(run: pathlib.Path, histogram: dict) -> pathlib.Path:
     return path
 
 
+def travel_mm(step: dict) -> float:
+    """How far the first travelling body has moved after a step (mm)."""
+    travel = step.get("travel") or [{"translation_m": [0.0, 0.0, 0.0]}]
+    return 1000.0 * math.sqrt(sum(c * c for c in travel[0]["translation_m"]))
+
+
+def steps_picture(run: pathlib.Path, steps: list) -> pathlib.Path:
+    """The largest strains and the draw-in against the tool's travel, step by step."""
+    plt = pc.pyplot()
+    fig, strain_axis = plt.subplots(figsize=(6.4, 4.0))
+    travel = [travel_mm(s) for s in steps]
+    for key, label, style in (("max_warp_strain", "largest warp strain", "o-"),
+                              ("max_weft_strain", "largest weft strain", "s-")):
+        strain_axis.plot(travel, [100.0 * (s[key] or 0.0) for s in steps], style, label=label)
+    strain_axis.set_xlabel("tool travel (mm)")
+    strain_axis.set_ylabel("strain (%)")
+    draw_axis = strain_axis.twinx()
+    draw_axis.plot(travel, [1000.0 * (s["draw_in_max_m"] or 0.0) for s in steps], "k^--", label="largest draw-in")
+    draw_axis.set_ylabel("draw-in (mm)")
+    lines = strain_axis.get_legend_handles_labels()
+    more = draw_axis.get_legend_handles_labels()
+    strain_axis.legend(lines[0] + more[0], lines[1] + more[1], loc="upper left")
+    strain_axis.set_title("load steps: strain and draw-in as the tool travels")
+    fig.tight_layout()
+    path = save_figure(fig, run / "steps.png")
+    plt.close(fig)
+    return path
+
+
+def steps_table(steps: list) -> str:
+    e = html.escape
+    head = ("step", "travel (mm)", "iterations", "‖V‖∞ (N)", "contact nodes", "largest warp strain (%)",
+            "largest weft strain (%)", "largest draw-in (mm)", "file")
+    rows = "".join(
+        "<tr>" + "".join(f"<td>{e(str(v))}</td>" for v in (
+            s["step"], number(travel_mm(s), 4), s["iterations"], number(s["residual_N"], 3), s["contact_nodes"],
+            number(100.0 * s["max_warp_strain"], 3) if s["max_warp_strain"] is not None else "—",
+            number(100.0 * s["max_weft_strain"], 3) if s["max_weft_strain"] is not None else "—",
+            number(1000.0 * s["draw_in_max_m"], 3) if s["draw_in_max_m"] is not None else "—",
+            s["fabric_file"])) + "</tr>" for s in steps)
+    return "<table><tr>" + "".join(f"<th>{e(h)}</th>" for h in head) + f"</tr>{rows}</table>"
+
+
 def number(value, digits=4) -> str:
     return "—" if value is None else f"{value:.{digits}g}"
 
@@ -177,6 +223,12 @@ def summary_rows(result: dict) -> list:
     if flat and formed:
         rows.append(("fabric area", f"{number(flat * 1e4)} cm² flat → {number(formed * 1e4)} cm² formed "
                                     f"({number((formed / flat - 1) * 100, 3)} %)"))
+    if f.get("draw_in_max_m") is not None:
+        rows.append(("largest draw-in", f"{number(f['draw_in_max_m'] * 1000, 3)} mm at {f.get('draw_in_max_node', '?')}"))
+    if "sliding_nodes" in f:
+        rows.append(("on a body", f"{f['sliding_nodes']} nodes sliding, {f['stuck_nodes']} stuck"))
+    if "load_steps" in result:
+        rows.append(("load steps", f"{len(result.get('steps', []))} of {result['load_steps']} finished"))
     for direction in ("warp", "weft"):
         if f"max_{direction}_strain" in f:
             rows.append((f"largest {direction} strain", peak_text(f[f"max_{direction}_strain"])))
@@ -194,6 +246,9 @@ def page(result: dict, pictures: list) -> str:
     rows = "\n".join(f"<tr><th>{e(str(k))}</th><td>{e(str(v))}</td></tr>" for k, v in summary_rows(result))
     figures = "\n".join(f'<figure><img src="{e(name)}" alt="{e(caption)}"><figcaption>{e(caption)}'
                         f"</figcaption></figure>" for name, caption in pictures)
+    steps = result.get("steps") or []
+    steps_section = (f"<h2>Load steps</h2>{steps_table(steps)}<p>Each step's fabric and bodies are in the "
+                     f"files named, and <code>fabric_steps.pvd</code> plays them in ParaView.</p>") if steps else ""
     modelled = "".join(f"<li>{e(m)}</li>" for m in result.get("modelled", []))
     warnings = "".join(f"<li>{e(w)}</li>" for w in result.get("warnings", [])) or "<li>none</li>"
     inputs = "".join(f"<tr><td>{e(i['role'])}</td><td>{e(i['path'])}</td><td><code>{e(i['sha256'])}</code></td></tr>"
@@ -219,6 +274,7 @@ figure {{ display: inline-block; margin: 0 1em 1em 0; }} img {{ max-width: 34em;
 </table>
 <h2>Pictures</h2>
 {figures}
+{steps_section}
 <h2>What was modelled</h2><ul>{modelled}</ul>
 <h2>Warnings</h2><ul>{warnings}</ul>
 <h2>Inputs</h2>
@@ -268,6 +324,9 @@ def make_report(run: pathlib.Path) -> pathlib.Path:
         histogram_picture(run, result["figures"]["strain_histogram"])
         pictures.append(("strain_histogram.png", "fabric area by strain"))
     pictures.append(("convergence.png", "convergence: ‖V‖∞ against iteration"))
+    if result.get("steps"):
+        steps_picture(run, result["steps"])
+        pictures.append(("steps.png", "load steps: strain and draw-in against the tool's travel"))
     path = run / "report.html"
     write_text(path, page(result, pictures))
     return path

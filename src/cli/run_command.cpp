@@ -157,8 +157,8 @@ void explain_ending(Summary* summary, const RunMonitor& monitor, const std::stri
 int run(const RunArguments& args) {
   const auto started = std::chrono::steady_clock::now();
   const RunStart start = start_of(args);
-  const Scene& scene = start.scene;
-  Model model = build_model(scene);  // its bodies travel in a run in load steps
+  Model model = build_model(start.scene);  // its bodies travel in a run in load steps
+  const Scene scene = with_tolerance_in_newtons(start.scene, model);
   const std::string dir = output_dir(args, scene);
   check_results_folder(dir);
   const RunInputs inputs = describe_inputs(scene, start.overrides);

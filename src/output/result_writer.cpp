@@ -10,6 +10,7 @@
 
 #include "fabform/analysis/drape_figures.hpp"
 #include "fabform/error.hpp"
+#include "fabform/model/force_scale.hpp"
 #include "fabform/model/spring_strains.hpp"
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/output/draw_in.hpp"
@@ -103,6 +104,11 @@ std::string result_json(const RunRecord& run) {
   j["iterations"] = s.iterations;
   j["residual_N"] = number(s.residual_N);
   j["tolerance_N"] = s.tolerance_N;
+  // The same, relative to what a spring carries per unit strain at rest (force_scale.hpp).
+  const double scale = spring_force_scale_N(run.model);
+  j["force_scale_N"] = scale;
+  j["tolerance_relative"] = scale > 0.0 ? number(s.tolerance_N / scale) : nlohmann::json(nullptr);
+  j["residual_relative"] = scale > 0.0 ? number(s.residual_N / scale) : nlohmann::json(nullptr);
   j["residual_recomputed_N"] = number(run.check.max_residual_N);
   j["wall_seconds"] = run.wall_seconds;
   j["solve_seconds"] = s.seconds;

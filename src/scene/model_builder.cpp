@@ -9,6 +9,7 @@
 #include "fabform/io/mesh_reader.hpp"
 #include "fabform/material/material_csv.hpp"
 #include "fabform/model/clamp_frame.hpp"
+#include "fabform/model/force_scale.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/pressure.hpp"
@@ -273,6 +274,17 @@ void check_drape_support(const Scene& scene, const Model& model) {
 }
 
 }  // namespace
+
+Scene with_tolerance_in_newtons(Scene scene, const Model& model) {
+  if (scene.solver.tolerance_relative <= 0.0) return scene;
+  const double scale = spring_force_scale_N(model);
+  if (!(scale > 0.0))
+    throw InputError(scene.tolerance_where, "the fabric's warp and weft tables start slack (no tension just above "
+                                            "zero strain): a tolerance relative to their force scale means nothing; "
+                                            "give tolerance_N");
+  scene.solver.set_tolerance_N(scene.solver.tolerance_relative * scale);
+  return scene;
+}
 
 Model build_model(const Scene& scene) {
   Fabric fabric = build_fabric(scene);

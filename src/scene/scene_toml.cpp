@@ -386,6 +386,24 @@ void read_initial(TableReader r, Scene* scene) {
   r.reject_unknown({"shape", "height_m", "axis_m", "radius_m", "facing_deg", "span_deg"});
 }
 
+// e in newtons or relative to the fabric's force scale: a scene gives one; a command line that
+// sets the other replaces the scene's.
+void read_relative_tolerance(TableReader& r, SolverSpec* s) {
+  if (!r.has("tolerance_relative")) return;
+  const double relative = r.number("tolerance_relative", 0.0);
+  if (!(relative > 0.0 && relative <= 1.0))
+    r.fail("tolerance_relative", "must be in (0, 1]: ||R||inf over a spring's force per unit strain at rest");
+  const bool from_command_line = r.locate_key("tolerance_relative").file == kOverrideSource;
+  if (r.has("tolerance_N")) {
+    const bool newtons_from_command_line = r.locate_key("tolerance_N").file == kOverrideSource;
+    if (newtons_from_command_line == from_command_line)
+      r.fail("tolerance_relative", "give one of tolerance_N (newtons) or tolerance_relative (of the fabric's force "
+                                   "scale), not both");
+    if (newtons_from_command_line) return;
+  }
+  s->tolerance_relative = relative;
+}
+
 // tolerance_N and max_iterations are every solver's; the other keys belong to one solver each
 // and are validated whichever solver runs, so a scene stays valid when --solver switches it.
 void read_solver(TableReader r, Scene* scene) {
@@ -394,8 +412,8 @@ void read_solver(TableReader r, Scene* scene) {
   bool known = false;
   for (const auto& name : solver_names()) known = known || name == s.name;
   if (!known) r.fail("name", "unknown solver '" + shown(s.name) + "' (see `fabform solvers`)");
-  s.relax.tolerance_N = s.newton.tolerance_N = s.dynamic.tolerance_N =
-      r.number("tolerance_N", s.relax.tolerance_N);
+  s.set_tolerance_N(r.number("tolerance_N", s.relax.tolerance_N));
+  read_relative_tolerance(r, &s);
   if (r.has("max_iterations"))
     s.relax.max_iterations = s.newton.max_iterations = s.dynamic.max_iterations = checked_int(
         r, "max_iterations", r.integer("max_iterations", 0), 0, 1'000'000'000);
@@ -414,7 +432,7 @@ void read_solver(TableReader r, Scene* scene) {
   if (const std::string why = s.relax.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (const std::string why = s.newton.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (const std::string why = s.dynamic.invalid_reason(&field); !why.empty()) r.fail(field, why);
-  r.reject_unknown({"name", "tolerance_N", "max_iterations", "C", "regularization", "armijo",
+  r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "max_iterations", "C", "regularization", "armijo",
                     "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
                     "stretch_limit", "threads", "friction_creep"});
 }
@@ -546,6 +564,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
   read_initial(r.table("initial", false), &scene);
   TableReader solver = r.table("solver", false);
   read_solver(solver, &scene);
+  scene.tolerance_where = solver.locate_key("tolerance_relative");
   if (scene.wind.on && scene.solver.name != "dynamic")
     solver.fail("name", "the scene has wind (" +
                             (scene.wind.where.line > 0 ? "line " + std::to_string(scene.wind.where.line)

@@ -260,6 +260,49 @@ TEST_F(RigidBodyRealMeshes, TorsoClosestWithinMatchesBruteForce) {
   check_closest_within_against_brute_force(*torso_->body, 222u);
 }
 
+// A body moved along a tool path (turned and shifted) answers as its moved mesh: closest points
+// against brute force over posed_mesh(), the normal turned with it, the inside still inside,
+// and entries along a segment where the moved mesh has them.
+TEST_F(RigidBodyRealMeshes, AMovedBodyAnswersAsItsMovedMesh) {
+  RigidBody& body = *featuretype_->body;
+  const TriangleMesh placed = body.mesh();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = rotation_from_degrees(V(10.0, -25.0, 40.0));
+  pose.translation() = V(0.03, -0.01, 0.05);
+  body.move_to(pose);
+  const TriangleMesh posed = body.posed_mesh();
+  const double tol = 1e-9 + 1e-6 * body.box().diagonal();
+  std::mt19937 rng(404u);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const V& in_place : query_points(body, 404u)) {
+    const V p = pose * in_place;
+    const SurfacePoint s = body.closest(p);
+    EXPECT_NEAR(s.distance, brute_closest(posed, p).distance, tol) << p.transpose();
+    EXPECT_NEAR((p - s.point).norm(), s.distance, 1e-12 * (1.0 + s.distance));
+    // The same answer as the unmoved body's for the unmoved point, carried along.
+    body.move_to(Eigen::Isometry3d::Identity());
+    const SurfacePoint at_home = body.closest(in_place);
+    body.move_to(pose);
+    if (at_home.distance <= tol) continue;  // on the surface, rounding decides the side and the crossing
+    // Carried along, to the rounding of the transforms (the far points are 1000 diagonals out;
+    // the CAD part's sliver triangles amplify a rounding of 1e-17 m in the query to ~1e-12 m),
+    // where the same triangle answers (two at one distance may swap, as above).
+    if (at_home.triangle == s.triangle) {
+      EXPECT_LE((pose * at_home.point - s.point).norm(), 1e-10 * (body.box().diagonal() + s.distance));
+      EXPECT_LE((pose.linear() * at_home.normal - s.normal).norm(), 1e-12);
+    }
+    EXPECT_EQ(at_home.signed_distance < 0.0, s.signed_distance < 0.0);
+    const V to = p + 0.05 * body.box().diagonal() * V(unit(rng), unit(rng), unit(rng));
+    const bool crosses = body.segment_crosses(p, to);
+    body.move_to(Eigen::Isometry3d::Identity());
+    const bool crosses_at_home = body.segment_crosses(in_place, pose.inverse() * to);
+    body.move_to(pose);
+    EXPECT_EQ(crosses, crosses_at_home) << p.transpose();
+  }
+  body.move_to(Eigen::Isometry3d::Identity());
+  EXPECT_EQ(body.posed_mesh().vertices, placed.vertices);
+}
+
 TEST_F(RigidBodyRealMeshes, FeaturetypeIsOutwardAndOutsidePointsArePositive) {
   const RigidBody& body = *featuretype_->body;
   // SOURCES.md: oriented outward (positive enclosed volume), though not watertight.

@@ -63,6 +63,41 @@ TEST_F(ModelBuilder, NodeSetThatSelectsNothing) {
   EXPECT_NE(std::string(index.what()).find("selects no node"), std::string::npos) << index.what();
 }
 
+// A blank holder locks its nodes in z and shares its force by area; one that grips nothing is
+// refused at its table.
+TEST_F(ModelBuilder, AClampHoldsItsFrameInZ) {
+  const Model model = build(scene("[clamp]\nwidth_m = 0.01\nforce_N = 10\nfriction = 0.3\n[solver]\nname = \"newton\"\n"));
+  for (int k = 0; k < model.node_count(); ++k) {
+    const int i = model.fabric.i_of(k), j = model.fabric.j_of(k);
+    const bool frame = std::min({i, j, 10 - i, 10 - j}) <= 1;  // 1 cm of 1 cm cells
+    EXPECT_EQ(model.locks[static_cast<std::size_t>(k)], frame ? kLockZ : 0) << i << ", " << j;
+  }
+  const InputError e = error(scene("[clamp]\nbox_m = [[0.2, 0.2], [0.3, 0.3]]\nforce_N = 10\nfriction = 0.3\n"
+                                   "[solver]\nname = \"newton\"\n"));
+  EXPECT_EQ(e.where().key, "clamp");
+  EXPECT_EQ(e.where().line, 12);
+  EXPECT_NE(std::string(e.what()).find("selects no node"), std::string::npos) << e.what();
+}
+
+// A tolerance relative to the force scale becomes newtons once the tables are known; tables
+// that start slack have no scale, and the key is named.
+TEST_F(ModelBuilder, RelativeToleranceBecomesNewtons) {
+  const std::string relative = scene("[solver]\ntolerance_relative = 1e-3\n");
+  const Scene written = load_scene(dir.write("scene.toml", relative));
+  const Model model = build_model(written);
+  EXPECT_NEAR(with_tolerance_in_newtons(written, model).solver.tolerance_N(), 1e-3 * 0.5 * 0.01 * 500.0, 1e-15);
+  dir.write("table.csv", "strain,tension_N_per_m\n0,0\n0.1,0\n1,500\n");
+  const Scene slack = load_scene(dir.write("scene.toml", relative));
+  try {
+    with_tolerance_in_newtons(slack, build_model(slack));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "solver.tolerance_relative");
+    EXPECT_EQ(e.where().line, 13);
+    EXPECT_NE(std::string(e.what()).find("start slack"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(ModelBuilder, FabricStartingInsideTheBody) {
   const InputError e = error(scene("", "0.005"));
   EXPECT_NE(std::string(e.what()).find("inside body"), std::string::npos) << e.what();

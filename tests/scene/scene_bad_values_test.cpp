@@ -377,6 +377,8 @@ const std::vector<KeyRow>& key_table() {
         {"dynamic", "\"dynamic\"", A, kSame}, {"newton", "\"newton\"", A, kSame}}},
       // A loose e is the user's to choose: the run stops at iteration 0 and says so.
       {"solver.tolerance_N",             T::number,    lift, A,   R,  R,   A,   _,    "", {}},
+      // Exclusive with tolerance_N, which the base gives: checked in scene_toml_test.cpp.
+      {"solver.tolerance_relative",      T::only_extras, lift, _, _,  _,   _,   _,    "", {}},
       {"solver.max_iterations",          T::integer,   lift, A,   R,  A,   R,   _,    "",
        {{"cap", "1_000_000_000", A, kSame}, {"beyond_cap", "1_000_000_001", R, kSame}}},
       {"solver.C",                       T::number,    lift, A,   R,  R,   R,   _,    "",

@@ -155,6 +155,30 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
+// e relative to the fabric's force scale, or in newtons: one of the two; a command line giving
+// the other replaces the scene's.
+TEST(LoadScene, ToleranceIsInNewtonsOrRelativeNotBoth) {
+  std::string text = kMinimal;
+  text.replace(text.find("tolerance_N = 1e-3"), 18, "tolerance_relative = 1e-3");
+  test::TempDir dir;
+  EXPECT_EQ(load_scene(dir.write("relative.toml", text)).solver.tolerance_relative, 1e-3);
+  const Scene newtons = load_scene(dir.write("relative.toml", text), {{"solver.tolerance_N", "2e-4"}});
+  EXPECT_EQ(newtons.solver.tolerance_relative, 0.0);
+  EXPECT_EQ(newtons.solver.tolerance_N(), 2e-4);
+  EXPECT_EQ(load_scene(dir.write("plain.toml", kMinimal), {{"solver.tolerance_relative", "5e-3"}}).solver.tolerance_relative,
+            5e-3);
+  InputError e = load_error(text + "tolerance_N = 1e-3\n");
+  EXPECT_EQ(e.where().key, "solver.tolerance_relative") << e.what();
+  EXPECT_NE(std::string(e.what()).find("not both"), std::string::npos) << e.what();
+  for (const char* bad : {"0", "-1e-3", "1.5"}) {
+    std::string out_of_range = text;
+    out_of_range.replace(out_of_range.find("1e-3"), 4, bad);
+    e = load_error(out_of_range);
+    EXPECT_EQ(e.where().key, "solver.tolerance_relative") << bad;
+    EXPECT_EQ(e.where().line, 9) << bad;
+  }
+}
+
 // A blank holder gripping a frame round the edge: its width, force and friction, held for newton.
 TEST(LoadScene, ReadsAClampFrame) {
   std::string text = kMinimal;

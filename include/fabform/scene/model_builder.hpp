@@ -10,4 +10,9 @@ namespace fabform {
 /// Throws InputError naming the file, line and key of the first problem.
 Model build_model(const Scene& scene);
 
+/// The scene with its solver's e in newtons: a tolerance relative to the fabric's force scale
+/// (solver.tolerance_relative) times that scale. Throws InputError at the key when the model's
+/// fabric has no force scale (stretch tables that start slack).
+Scene with_tolerance_in_newtons(Scene scene, const Model& model);
+
 }  // namespace fabform

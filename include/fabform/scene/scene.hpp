@@ -129,6 +129,7 @@ struct Scene {
   InitialShape initial;
   SourceLocation initial_where;
   SolverSpec solver;
+  SourceLocation tolerance_where;  // solver.tolerance_relative, for messages
   std::string output_dir;  // "" when the scene names none
   CheckpointSpec checkpoint;
 };

@@ -18,6 +18,14 @@ struct SolverSpec {
   NewtonOptions newton;        // used when name is "newton"
   DynamicOptions dynamic;      // used when name is "dynamic"
   int threads = 1;
+  // e relative to the fabric's force scale (force_scale.hpp), when > 0: the run resolves it to
+  // newtons once its model is built (set_tolerance_N).
+  double tolerance_relative = 0.0;
+
+  /// Sets every solver's e (N).
+  void set_tolerance_N(double tolerance_N) {
+    relax.tolerance_N = newton.tolerance_N = dynamic.tolerance_N = tolerance_N;
+  }
 
   /// e of the solver the spec names.
   double tolerance_N() const {
