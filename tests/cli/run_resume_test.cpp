@@ -8,6 +8,7 @@
 #include <csignal>
 #include <filesystem>
 #include <thread>
+#include <vector>
 
 #include "support/cli.hpp"
 #include "support/temp_dir.hpp"
@@ -31,6 +32,16 @@ std::string field(const std::string& json, const std::string& key) {
   if (at == std::string::npos) return "";
   const auto start = at + key.size() + 4;
   return json.substr(start, json.find_first_of(",\n", start) - start);
+}
+
+// Every value of `key` in the text, in order (a step's figures, one per step).
+std::vector<std::string> every_field(const std::string& json, const std::string& key) {
+  std::vector<std::string> values;
+  for (auto at = json.find("\"" + key + "\": "); at != std::string::npos; at = json.find("\"" + key + "\": ", at + 1)) {
+    const auto start = at + key.size() + 4;
+    values.push_back(json.substr(start, json.find_first_of(",\n", start) - start));
+  }
+  return values;
 }
 
 bool wait_for_file(const std::string& path, std::chrono::seconds limit) {
@@ -104,6 +115,40 @@ INSTANTIATE_TEST_SUITE_P(
                       Kill{"Sigterm", SIGTERM, 128 + SIGTERM, "output.checkpoint_every_minutes=0.002"},
                       Kill{"Sigkill", SIGKILL, -SIGKILL, "output.checkpoint_every_iterations=100"}),
     [](const auto& case_info) { return std::string(case_info.param.name); });
+
+// A run in load steps killed once its second step is written goes on from its checkpoint and
+// ends as the uninterrupted run ends: the same fabric, every step's files and figures.
+TEST(RunResumeInSteps, EndsWhereTheUninterruptedRunEnds) {
+  test::TempDir dir;
+  const auto cup_run = [&](const std::string& out) {
+    return std::vector<std::string>{"run", test::source_path("scenes/cup.toml"), "--out", out, "--quiet",
+                                    "--set", "body.0.path.steps=24"};
+  };
+  ASSERT_EQ(test::wait_for_exit(test::start_fabform(dir, cup_run("reference"))), 0) << slurp(dir.path("stderr.txt"));
+  const pid_t pid = test::start_fabform(dir, cup_run("out"));
+  ASSERT_TRUE(wait_for_file(dir.path("out/fabric_step_002.vtp"), std::chrono::seconds(120)));
+  kill(pid, SIGKILL);
+  const int killed = test::wait_for_exit(pid);
+  if (killed == 0) GTEST_SKIP() << "the run finished before it could be killed";
+  ASSERT_EQ(killed, -SIGKILL);
+  EXPECT_EQ(field(slurp(dir.path("out/result.json")), "termination"), "\"running\"");
+
+  const test::Outcome resumed = test::run_fabform(dir, "run --resume out --quiet");
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_EQ(slurp(dir.path("out/fabric.obj")), slurp(dir.path("reference/fabric.obj")));
+  EXPECT_EQ(slurp(dir.path("out/fabric_steps.pvd")), slurp(dir.path("reference/fabric_steps.pvd")));
+  for (const char* file : {"fabric_step_001.vtp", "fabric_step_002.vtp", "fabric_step_013.vtp", "fabric_step_024.vtp",
+                           "bodies_step_024.vtp"})
+    EXPECT_EQ(slurp(dir.path(std::string("out/") + file)), slurp(dir.path(std::string("reference/") + file))) << file;
+  const std::string done = slurp(dir.path("out/result.json"));
+  const std::string reference = slurp(dir.path("reference/result.json"));
+  EXPECT_EQ(field(done, "iterations"), field(reference, "iterations"));
+  EXPECT_EQ(field(done, "draw_in_max_m"), field(reference, "draw_in_max_m"));
+  // Every step's figures but its seconds.
+  for (const char* key : {"step", "iterations", "residual_N", "contact_nodes", "max_warp_strain", "draw_in_max_m"})
+    EXPECT_EQ(every_field(done, key), every_field(reference, key)) << key;
+  EXPECT_EQ(every_field(done, "step").size(), 24u);
+}
 
 // What cannot be resumed says why, exits 2 and leaves the folder as it was.
 class ResumeRefusal : public ::testing::Test {

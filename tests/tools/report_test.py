@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""tools/report.py on real runs of the shipped mold, opened in headless Chromium (Debian's
-chromium): the page loads without console errors and shows every picture; a run that did not
-converge says so at the top; a picture missing is reported in place (so the check can fail);
+"""tools/report.py on real runs of the shipped mold and cup, opened in headless Chromium (Debian's
+chromium): the page loads without console errors and shows every picture; a run in load steps
+shows its steps, and its step files are VTK XML that Python's parser reads and that agree with
+result.json; a run that did not converge says so at the top; a picture missing is reported in place (so the check can fail);
 bad input is one line and exit status 2. And tools/raster.py's z-buffer against geometry known
 by hand.
 
@@ -15,6 +16,7 @@ import subprocess
 import sys
 import tempfile
 import unittest
+import xml.etree.ElementTree as ET
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools"))
@@ -103,6 +105,50 @@ class Report(unittest.TestCase):
         page.write_text(page.read_text().replace("</body>", "<script>no_such_function();</script></body>"))
         _, console = open_in_chromium(page)
         self.assertTrue(any("no_such_function" in line for line in console), console)
+
+
+class ReportOfLoadSteps(unittest.TestCase):
+    """The cup, small, in three steps: its step files are well-formed VTK XML (Python's own
+    parser) that agree with result.json, and its report shows the steps and loads in Chromium."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.cup = pathlib.Path(tempfile.mkdtemp(prefix="fabform-steps-"))
+        command = [FABFORM, "run", str(ROOT / "scenes" / "cup.toml"), "--out", str(cls.cup), "--quiet",
+                   "--set", "fabric.divisions=[16,16]", "--set", "body.0.path.steps=3"]
+        assert subprocess.run(command, stderr=subprocess.PIPE).returncode == 0
+        subprocess.run(REPORT + [str(cls.cup)], check=True, capture_output=True)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.cup, ignore_errors=True)
+
+    def test_step_files_are_vtk_xml_that_agree_with_the_result(self):
+        result = json.loads((self.cup / "result.json").read_text())
+        self.assertEqual([s["step"] for s in result["steps"]], [1, 2, 3])
+        collection = ET.parse(self.cup / "fabric_steps.pvd").getroot()
+        data_sets = collection.findall("./Collection/DataSet")
+        self.assertEqual([d.get("file") for d in data_sets if d.get("part") == "0"],
+                         [s["fabric_file"] for s in result["steps"]])
+        for step in result["steps"]:
+            piece = ET.parse(self.cup / step["fabric_file"]).getroot().find("./PolyData/Piece")
+            self.assertEqual(int(piece.get("NumberOfPoints")), result["nodes"])
+            self.assertEqual(int(piece.get("NumberOfPolys")), result["fabric"]["faces"])
+            arrays = {a.get("Name"): a.text.split() for a in piece.findall("./PointData/DataArray")}
+            self.assertEqual(len(arrays["strain_warp"]), result["nodes"])
+            self.assertAlmostEqual(max(float(v) for v in arrays["draw_in_m"]), step["draw_in_max_m"], places=9)
+            self.assertEqual(sum(float(v) for v in arrays["contact"]), step["contact_nodes"])
+            bodies = ET.parse(self.cup / step["bodies_file"]).getroot().find("./PolyData/Piece")
+            self.assertGreater(int(bodies.get("NumberOfPolys")), 0)
+
+    def test_the_report_shows_every_step_and_loads_in_chromium(self):
+        page = (self.cup / "report.html").read_text()
+        self.assertIn("<h2>Load steps</h2>", page)
+        self.assertIn("largest draw-in", page)
+        self.assertTrue((self.cup / "steps.png").is_file())
+        dom, console = open_in_chromium(self.cup / "report.html")
+        self.assertEqual(console, [])
+        self.assertIn(f'data-pictures-shown="{PICTURES + 1}/{PICTURES + 1}"', dom)
 
 
 class BadInput(unittest.TestCase):
