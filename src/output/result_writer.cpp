@@ -338,7 +338,7 @@ StepResult step_result(const RunRecord& run, int step) {
   const FabricFigures f = fabric_figures(run.model, run.state.x, run.check.contact);
   const DrawIn edge = draw_in(run.model, run.state.x);
   nlohmann::json travel = nlohmann::json::array();
-  for (std::size_t b = 0; b < run.model.bodies.size(); ++b)
+  for (std::size_t b = 0; b < run.model.paths.size(); ++b)
     if (const ToolPath& path = run.model.paths[b]; path.moves())
       travel.push_back({{"body", run.model.bodies[b].name()},
                         {"translation_m", vector_json(path.translation_at(step))},

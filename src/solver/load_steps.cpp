@@ -1,6 +1,7 @@
 #include "fabform/solver/load_steps.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -33,7 +34,7 @@ void put_overlapped_on_surface(const Model& model, SolverState& state) {
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
     if (state.contact[i].active() || model.locks[i] == all) continue;
-    for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    for (std::size_t b = 0; b < model.paths.size(); ++b) {
       if (!model.paths[b].moves()) continue;
       const SurfacePoint s = model.bodies[b].closest(state.x[i]);
       if (s.signed_distance >= 0.0) continue;
@@ -53,7 +54,6 @@ Summary step_start(const std::vector<IterationRecord>& history, int step, double
   for (const IterationRecord& r : history)
     if (r.step == step) start.history.push_back(r);
   if (start.history.empty()) return start;
-  start.solver = "";  // begin_summary names it; the checkpoint's solver was checked by the caller
   start.iterations = start.history.back().iteration;
   start.seconds = start.history.back().seconds;
   start.residual_N = start.history.back().residual_N;
@@ -68,7 +68,7 @@ std::string step_message(int step, int steps, const Summary& s) {
 }  // namespace
 
 void begin_load_step(Model& model, SolverState& state, int step) {
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+  for (std::size_t b = 0; b < model.paths.size(); ++b) {
     const ToolPath& path = model.paths[b];
     if (!path.moves()) continue;
     const Eigen::Isometry3d to = path.pose(step);
@@ -82,10 +82,11 @@ void begin_load_step(Model& model, SolverState& state, int step) {
 Summary solve_in_steps(Model& model, SolverState& state, const SolverSpec& spec, const IterationObserver& observer,
                        const StepObserver& step_done, Summary resumed) {
   const int steps = model.load_steps();
+  if (steps == 0) throw std::invalid_argument("solve_in_steps: no body travels");
   Summary run = begin_summary(spec.name, spec.tolerance_N(), std::move(resumed));
   const int resumed_step = run.history.empty() ? 0 : run.history.back().step;
   // The bodies stand where the checkpoint's step put them; the state is already carried.
-  for (std::size_t b = 0; b < model.bodies.size() && resumed_step > 0; ++b)
+  for (std::size_t b = 0; b < model.paths.size() && resumed_step > 0; ++b)
     if (model.paths[b].moves()) model.bodies[b].move_to(model.paths[b].pose(resumed_step));
   for (int step = resumed_step > 0 ? resumed_step : 1; step <= steps; ++step) {
     if (step != resumed_step) begin_load_step(model, state, step);

@@ -64,6 +64,7 @@ class RigidBody {
   double friction() const { return friction_; }
   /// The mesh as placed by the scene, before any travel (see posed_mesh()).
   const TriangleMesh& mesh() const { return mesh_; }
+  /// The placed mesh's bounding box (its size holds wherever the body travels).
   const BoundingBox& box() const { return box_; }
   /// Volume enclosed, positive when the faces are oriented outward (meaningful when closed).
   double signed_volume() const;

@@ -34,7 +34,7 @@ struct Model {
   std::optional<TensionTable> shear = {};   // the shear springs' table, when the fabric has them
   std::optional<TensionTable> bend = {};    // the bend springs' table, when the fabric has them
   TermList terms;                           // every term acting on the fabric, springs first
-  std::vector<ToolPath> paths;              // per body: its travel (none: it stays put)
+  std::vector<ToolPath> paths;              // none, or one per body: its travel (steps 0: it stays put)
 
   /// The table a kind of spring follows; the model builder makes sure the fabric's kinds have one.
   const TensionTable& table(SpringKind kind) const {

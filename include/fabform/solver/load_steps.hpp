@@ -23,7 +23,7 @@ using StepObserver = std::function<void(int step, const SolverState& state, cons
 /// (step 1: from their placements).
 void begin_load_step(Model& model, SolverState& state, int step);
 
-/// Solves `model` (model.load_steps() > 0) step by step from `state`. Returns the run's
+/// Solves `model` step by step from `state` (std::invalid_argument when no body travels). Returns the run's
 /// summary: every step's records in its history, the total iterations and seconds, and the
 /// termination of the last step solved; a step that does not converge ends the run, its
 /// message naming the step. `resumed` is a checkpoint's summary: the run goes on inside the
