@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README's pictures: runs every shipped scene into results/SCENE, writes its report
-# (tools/report.py) and copies its strain maps into docs/pictures/SCENE_strain_{warp,weft}.png.
+# (tools/report.py) and copies its strain maps into docs/pictures/SCENE_strain_{warp,weft}.png
+# (and a run in load steps its strain and draw-in against travel, SCENE_steps.png).
 # Run after tools/setup.sh; takes about two minutes on two cores.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -13,4 +14,5 @@ for scene in mold vacuum cup torso torso_frictionless dome; do
   for direction in warp weft; do
     cp "results/$scene/strain_$direction.png" "docs/pictures/${scene}_strain_$direction.png"
   done
+  if [[ -f "results/$scene/steps.png" ]]; then cp "results/$scene/steps.png" "docs/pictures/${scene}_steps.png"; fi
 done
