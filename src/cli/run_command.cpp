@@ -113,6 +113,15 @@ std::vector<std::string> collect_warnings(const Model& model, const SolverState&
     std::snprintf(text, sizeof text, "a node lies %.3g m inside a body", check.max_penetration_m);
     warnings.emplace_back(text);
   }
+  if (const SpringCuts& cuts = check.spring_cuts; cuts.springs > 0) {
+    const Spring& deepest = model.fabric.springs()[static_cast<std::size_t>(cuts.deepest_spring)];
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%d springs cut into a body between their nodes (contact is node-only), the deepest %.3g m, from %s: "
+                  "refine the fabric there or round the body's edges",
+                  cuts.springs, cuts.deepest_m, model.fabric.node_name(deepest.a).c_str());
+    warnings.emplace_back(text);
+  }
   warnings.insert(warnings.end(), of_model.begin(), of_model.end());
   return warnings;
 }

@@ -95,6 +95,7 @@ EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eige
       report.worst_node = static_cast<int>(k);
     }
   }
+  report.spring_cuts = find_spring_cuts(model, x);
   return report;
 }
 

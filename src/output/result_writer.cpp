@@ -120,6 +120,8 @@ std::string result_json(const RunRecord& run) {
   const DrawIn edge = draw_in(run.model, run.state.x);
   j["figures"]["draw_in_max_m"] = edge.max_node < 0 ? nlohmann::json(nullptr) : number(edge.max_m);
   j["figures"]["draw_in_max_node"] = edge.max_node < 0 ? nlohmann::json(nullptr) : nlohmann::json(run.model.fabric.node_name(edge.max_node));
+  j["figures"]["springs_cutting_bodies"] = run.check.spring_cuts.springs;
+  j["figures"]["deepest_spring_cut_m"] = run.check.spring_cuts.deepest_m;
   j["figures"]["sliding_nodes"] = run.check.sliding_nodes;
   j["figures"]["stuck_nodes"] = run.check.stuck_nodes;
   j["fabric"] = fabric_json(run.model.fabric);

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "fabform/model/model.hpp"
+#include "fabform/model/spring_cuts.hpp"
 
 namespace fabform {
 
@@ -34,6 +35,7 @@ struct EquilibriumReport {
   int sliding_nodes = 0;  // pressed on a body, R* at μ·λ (within e): it slides or is about to; μ = 0 slides
   int stuck_nodes = 0;    // pressed on a body, R* inside the cone by more than e: friction holds it
   double max_penetration_m = 0.0;      // deepest node inside any body (0 when none is)
+  SpringCuts spring_cuts;              // springs reaching into a body between their nodes
 };
 
 /// A node within `contact_tolerance_m` of a body's surface counts as in contact; one whose R*

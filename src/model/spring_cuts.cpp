@@ -1,0 +1,58 @@
+#include "fabform/model/spring_cuts.hpp"
+
+#include <algorithm>
+
+namespace fabform {
+namespace {
+
+constexpr int kSamples = 32;
+constexpr double kCutShare = 0.01;  // of the spring's rest length (spring_cuts.hpp)
+
+// A point of a spring that reaches into a body lies within the spring's length of its surface
+// (the spring's ends are outside): a search that near is cheap; farther, a full one.
+double depth_at(const RigidBody& body, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double t) {
+  const Eigen::Vector3d p = a + t * (b - a);
+  const auto near = body.closest_within(p, (b - a).norm());
+  return -(near ? *near : body.closest(p)).signed_distance;
+}
+
+// How far inside the body the segment reaches: the deepest of its sample points, then refined
+// between that sample's neighbours by a ternary search (the depth rises to a corner and falls
+// past it), to a ten-millionth of the spring.
+double depth_inside(const RigidBody& body, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  int best = 1;
+  double depth = depth_at(body, a, b, 1.0 / kSamples);
+  for (int k = 2; k < kSamples; ++k)
+    if (const double d = depth_at(body, a, b, static_cast<double>(k) / kSamples); d > depth) depth = d, best = k;
+  double lo = static_cast<double>(best - 1) / kSamples, hi = static_cast<double>(best + 1) / kSamples;
+  for (int step = 0; step < 40; ++step) {
+    const double left = lo + (hi - lo) / 3.0, right = hi - (hi - lo) / 3.0;
+    if (depth_at(body, a, b, left) < depth_at(body, a, b, right)) lo = left;
+    else hi = right;
+  }
+  return std::max({depth, depth_at(body, a, b, 0.5 * (lo + hi)), 0.0});
+}
+
+}  // namespace
+
+SpringCuts find_spring_cuts(const Model& model, const std::vector<Eigen::Vector3d>& x) {
+  SpringCuts cuts;
+  const std::vector<Spring>& springs = model.fabric.springs();
+  for (std::size_t s = 0; s < springs.size(); ++s) {
+    if (springs[s].kind == SpringKind::bend) continue;  // spans two cells: its segment is no fabric
+    const Eigen::Vector3d& a = x[static_cast<std::size_t>(springs[s].a)];
+    const Eigen::Vector3d& b = x[static_cast<std::size_t>(springs[s].b)];
+    if (!a.allFinite() || !b.allFinite()) continue;
+    for (const RigidBody& body : model.bodies) {
+      if (!body.segment_crosses(a, b)) continue;
+      const double depth = depth_inside(body, a, b);
+      if (depth <= kCutShare * springs[s].rest_length) continue;  // a chord of a curve, or grazing
+      ++cuts.springs;
+      if (depth > cuts.deepest_m) cuts.deepest_m = depth, cuts.deepest_spring = static_cast<int>(s);
+      break;
+    }
+  }
+  return cuts;
+}
+
+}  // namespace fabform
