@@ -225,6 +225,9 @@ def summary_rows(result: dict) -> list:
                                     f"({number((formed / flat - 1) * 100, 3)} %)"))
     if f.get("draw_in_max_m") is not None:
         rows.append(("largest draw-in", f"{number(f['draw_in_max_m'] * 1000, 3)} mm at {f.get('draw_in_max_node', '?')}"))
+    if f.get("springs_cutting_bodies"):
+        rows.append(("springs cutting a body", f"{f['springs_cutting_bodies']}, the deepest "
+                                               f"{number(f['deepest_spring_cut_m'] * 1000, 3)} mm (contact is node-only)"))
     if "sliding_nodes" in f:
         rows.append(("on a body", f"{f['sliding_nodes']} nodes sliding, {f['stuck_nodes']} stuck"))
     if "load_steps" in result:

@@ -144,6 +144,10 @@ class ReportOfLoadSteps(unittest.TestCase):
     def test_the_report_shows_every_step_and_loads_in_chromium(self):
         page = (self.cup / "report.html").read_text()
         self.assertIn("<h2>Load steps</h2>", page)
+        # So coarse a blank (8.75 mm springs) cuts the punch's 6 mm rounded shoulder, and says so.
+        cuts = json.loads((self.cup / "result.json").read_text())["figures"]["springs_cutting_bodies"]
+        self.assertGreater(cuts, 0)
+        self.assertIn(f"springs cutting a body</th><td>{cuts}, the deepest", page)
         self.assertIn("largest draw-in", page)
         self.assertTrue((self.cup / "steps.png").is_file())
         dom, console = open_in_chromium(self.cup / "report.html")
