@@ -233,7 +233,8 @@ std::string fabric_vtk(const RunRecord& run) {
   return out.str();
 }
 
-// VTK's XML polygon data, ASCII: what a ParaView collection (.pvd) plays as a series.
+// VTK's XML polygon data, ASCII: what a ParaView collection (.pvd) plays as a series. A value
+// that is not finite is written as 0, as in fabric.vtk.
 std::string vtp_text(const std::vector<Eigen::Vector3d>& points, const std::vector<std::vector<int>>& polygons,
                      const std::vector<PointField>& fields) {
   std::ostringstream out;
@@ -244,12 +245,12 @@ std::string vtp_text(const std::vector<Eigen::Vector3d>& points, const std::vect
   for (const auto& p : points) out << (std::isfinite(p.x()) ? p.x() : 0.0) << ' ' << (std::isfinite(p.y()) ? p.y() : 0.0)
                                    << ' ' << (std::isfinite(p.z()) ? p.z() : 0.0) << '\n';
   out << "</DataArray>\n</Points>\n<Polys>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  std::size_t offset = 0;
   for (const auto& polygon : polygons) {
     for (const int v : polygon) out << v << ' ';
     out << '\n';
   }
   out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  std::size_t offset = 0;
   for (const auto& polygon : polygons) out << (offset += polygon.size()) << '\n';
   out << "</DataArray>\n</Polys>\n<PointData>\n";
   for (const auto& [name, values] : fields) {

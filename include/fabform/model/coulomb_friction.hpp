@@ -32,8 +32,6 @@ class CoulombFriction final : public Term {
   CoulombFriction(std::vector<FrictionContact> contacts, double creep_m, int node_count);
 
   bool empty() const { return contacts_.empty(); }
-  const std::vector<FrictionContact>& contacts() const { return contacts_; }
-  double creep_m() const { return creep_m_; }
   /// Whether `node` slipped less than ε from its anchor at `at` (false for a node it does not hold).
   bool stuck(int node, const Eigen::Vector3d& at) const;
 
