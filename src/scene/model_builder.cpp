@@ -228,9 +228,11 @@ Eigen::Vector3d pressure_reference(const Scene& scene, const Model& model) {
     if (first_rim < 0) first_rim = k;
     rim += model.start[static_cast<std::size_t>(k)], ++count;
   }
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : model.start) centre += p;
-  if (!draws_in) return centre / static_cast<double>(model.node_count());
+  if (!draws_in) {  // a held edge: o the fabric's centroid, as before the edge could draw in
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& p : model.start) centre += p;
+    return centre / static_cast<double>(model.node_count());
+  }
   rim /= static_cast<double>(count);
   rim.z() = model.start[static_cast<std::size_t>(first_rim)].z();  // exactly the plane, not a mean's rounding
   for (int k = 0; k < model.node_count(); ++k)
