@@ -15,5 +15,6 @@ constexpr int kExitInterruptedBase = 128;
 
 int run_command(const std::vector<std::string>& args);
 int check_command(const std::vector<std::string>& args);
+int study_command(const std::vector<std::string>& args);
 
 }  // namespace fabform::cli

@@ -10,6 +10,9 @@ namespace {
 const char* kUsage =
     "usage: fabform run SCENE [--out DIR] [--solver NAME] [--tol N] [--max-iter K]\n"
     "                         [--threads T] [--set KEY=VALUE]... [--quiet]\n"
+    "       fabform study STUDY.toml [--out DIR] [--jobs J] [--on local|slurm] [--threads-per-case T]\n"
+    "                    [--partition P] [--time-limit MIN] [--mem-mb M] [--quiet]\n"
+    "       fabform study --resume DIR [--jobs J] [--on local|slurm] ...\n"
     "       fabform check MESH [--units m|cm|mm|in] [--repair OUT.obj]\n"
     "       fabform solvers\n"
     "       fabform --version\n";
@@ -25,6 +28,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "run") return fabform::cli::run_command(rest);
   if (args[0] == "check") return fabform::cli::check_command(rest);
+  if (args[0] == "study") return fabform::cli::study_command(rest);
   if (args[0] == "solvers" && rest.empty()) {
     for (const auto& name : fabform::solver_names()) std::printf("%s\n", name.c_str());
     return fabform::cli::kExitDone;

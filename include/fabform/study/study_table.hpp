@@ -1,0 +1,23 @@
+#pragma once
+// DIR/study.csv: one row a case, its varied values, the figures the study collects, whether it
+// converged, its termination, iterations and wall seconds. A case without a finished result is
+// still a row, marked with how it ended (cancelled, timeout, failed, interrupted, missing),
+// its figures empty.
+#include <map>
+#include <string>
+
+#include "fabform/study/study_spec.hpp"
+
+namespace fabform {
+
+/// How the cases that ended without a finished result ended, by index; the others' rows come
+/// from their result.json.
+using CaseEndings = std::map<int, std::string>;
+
+/// The table's text.
+std::string study_table(const StudySpec& spec, const std::string& dir, const CaseEndings& endings);
+
+/// Writes DIR/study.csv atomically; returns how many cases converged.
+int write_study_table(const StudySpec& spec, const std::string& dir, const CaseEndings& endings);
+
+}  // namespace fabform

@@ -1,0 +1,52 @@
+#include "fabform/study/study_case.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+namespace fabform {
+
+namespace fs = std::filesystem;
+
+std::string case_folder(const std::string& dir, int index) {
+  char name[16];
+  std::snprintf(name, sizeof name, "%04d", index);
+  return (fs::path(dir) / "cases" / name).string();
+}
+
+std::string case_termination(const std::string& folder) {
+  std::ifstream in(fs::path(folder) / "result.json", std::ios::binary);
+  if (!in) return "";
+  const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
+  if (result.is_discarded() || !result.contains("termination") || !result["termination"].is_string()) return "";
+  return result["termination"].get<std::string>();
+}
+
+CaseState case_state(const std::string& folder) {
+  const std::string termination = case_termination(folder);
+  if (termination.empty()) return CaseState::missing;
+  if (termination != "interrupted" && termination != "running") return CaseState::finished;
+  return fs::exists(fs::path(folder) / "checkpoint.bin") ? CaseState::unfinished : CaseState::missing;
+}
+
+std::vector<std::string> case_arguments(const StudySpec& spec, const std::string& dir, int index, int threads) {
+  const std::string folder = case_folder(dir, index);
+  if (case_state(folder) == CaseState::unfinished) return {"run", "--resume", folder, "--quiet"};
+  std::vector<std::string> args = {"run", spec.scene};
+  for (const StudyValue& v : spec.fixed) args.insert(args.end(), {"--set", v.key + "=" + v.toml});
+  for (const StudyValue& v : spec.cases[static_cast<std::size_t>(index)].values)
+    args.insert(args.end(), {"--set", v.key + "=" + v.toml});
+  args.insert(args.end(), {"--out", folder, "--quiet", "--threads", std::to_string(threads)});
+  return args;
+}
+
+std::vector<int> cases_to_run(const StudySpec& spec, const std::string& dir) {
+  std::vector<int> todo;
+  for (int i = 0; i < static_cast<int>(spec.cases.size()); ++i)
+    if (case_state(case_folder(dir, i)) != CaseState::finished) todo.push_back(i);
+  return todo;
+}
+
+}  // namespace fabform

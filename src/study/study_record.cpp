@@ -1,0 +1,66 @@
+#include "fabform/study/study_record.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "fabform/study/atomic_file.hpp"
+
+namespace fabform {
+namespace {
+
+nlohmann::json values_json(const std::vector<StudyValue>& values) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const StudyValue& v : values) out.push_back({{"key", v.key}, {"value", v.toml}, {"text", v.text}});
+  return out;
+}
+
+std::vector<StudyValue> values_of(const nlohmann::json& list, const std::string& file) {
+  std::vector<StudyValue> values;
+  for (const auto& v : list)
+    values.push_back({v.at("key").get<std::string>(), v.at("value").get<std::string>(), v.at("text").get<std::string>(),
+                      {file, 0, v.at("key").get<std::string>()}});
+  return values;
+}
+
+}  // namespace
+
+std::string study_record_path(const std::string& dir) { return (std::filesystem::path(dir) / "study.json").string(); }
+
+void write_study_record(const std::string& dir, const StudySpec& spec) {
+  nlohmann::json j;
+  j["fabform_version"] = FABFORM_VERSION;
+  j["study_file"] = spec.file;
+  j["name"] = spec.name;
+  j["scene"] = spec.scene;
+  j["set"] = values_json(spec.fixed);
+  j["varied"] = spec.varied;
+  j["figures"] = spec.figures;
+  nlohmann::json cases = nlohmann::json::array();
+  for (const StudyCase& c : spec.cases) cases.push_back(values_json(c.values));
+  j["cases"] = cases;
+  write_file_atomically(study_record_path(dir), j.dump(2) + "\n");
+}
+
+StudySpec read_study_record(const std::string& dir) {
+  const std::string path = study_record_path(dir);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, ""}, "no study here (no study.json): start one with fabform study STUDY.toml --out DIR");
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    StudySpec spec;
+    spec.file = path;
+    spec.name = j.at("name").get<std::string>();
+    spec.scene = j.at("scene").get<std::string>();
+    spec.fixed = values_of(j.at("set"), path);
+    spec.varied = j.at("varied").get<std::vector<std::string>>();
+    spec.figures = j.at("figures").get<std::vector<std::string>>();
+    for (const auto& c : j.at("cases")) spec.cases.push_back({values_of(c, path)});
+    return spec;
+  } catch (const nlohmann::json::exception& error) {
+    throw InputError({path, 0, ""}, std::string("malformed study record: ") + error.what());
+  }
+}
+
+}  // namespace fabform
