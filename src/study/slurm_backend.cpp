@@ -55,19 +55,28 @@ Queue queue_of(const std::string& job) {
   return queue;
 }
 
-// How a task ended, from the controller's record of it; "" while it is still going.
+// How a task that left the queue ended, from the controller's records of the job: its own
+// record's state, or "" while it is still going. A pending task cancelled leaves no record of its
+// own (it is only taken out of the array's pending set): a task the known job has no record of
+// was cancelled.
 std::string task_ending(const std::string& job, int index) {
-  const CommandOutput s = run_process({"scontrol", "show", "job", "-o", job + "_" + std::to_string(index)});
-  const auto at = s.out.find("JobState=");
-  if (s.status != 0 || at == std::string::npos) return "failed";
-  const std::string state = s.out.substr(at + 9, s.out.find(' ', at) - at - 9);
-  if (state == "PENDING" || state == "RUNNING" || state == "CONFIGURING" || state == "COMPLETING" ||
-      state == "SUSPENDED" || state == "REQUEUED")
-    return "";
-  if (state == "CANCELLED") return "cancelled";
-  if (state == "TIMEOUT" || state == "DEADLINE") return "timeout";
-  if (state == "OUT_OF_MEMORY") return "out of memory";
-  return "failed";
+  const CommandOutput s = run_process({"scontrol", "show", "job", "-o", job});
+  if (s.status != 0) return "failed";
+  std::istringstream records(s.out);
+  for (std::string record; std::getline(records, record);) {
+    const auto task = record.find(" ArrayTaskId=" + std::to_string(index) + " ");
+    const auto at = record.find(" JobState=");
+    if (task == std::string::npos || at == std::string::npos) continue;
+    const std::string state = record.substr(at + 10, record.find(' ', at + 10) - at - 10);
+    if (state == "PENDING" || state == "RUNNING" || state == "CONFIGURING" || state == "COMPLETING" ||
+        state == "SUSPENDED" || state == "REQUEUED")
+      return "";
+    if (state == "CANCELLED") return "cancelled";
+    if (state == "TIMEOUT" || state == "DEADLINE") return "timeout";
+    if (state == "OUT_OF_MEMORY") return "out of memory";
+    return "failed";
+  }
+  return "cancelled";
 }
 
 }  // namespace

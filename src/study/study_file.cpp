@@ -36,12 +36,21 @@ std::string float_text(double value) {
   return out.find_first_of(".eni") == std::string::npos ? out + ".0" : out;
 }
 
+std::string toml_text(const toml::node& node) {
+  if (node.is_floating_point()) return float_text(*node.value<double>());
+  if (const toml::array* array = node.as_array()) {
+    std::string out = "[";
+    for (const toml::node& element : *array) out += (out.size() > 1 ? ", " : "") + toml_text(element);
+    return out + "]";
+  }
+  std::ostringstream out;
+  node.visit([&](const auto& n) { out << n; });
+  return out.str();
+}
+
 StudyValue study_value(const std::string& file, const std::string& key, const toml::node& node) {
-  std::ostringstream toml_text;
-  if (node.is_floating_point()) toml_text << float_text(*node.value<double>());
-  else node.visit([&](const auto& n) { toml_text << n; });
-  const std::string text = node.is_string() ? *node.value<std::string>() : toml_text.str();
-  return {key, toml_text.str(), text, at(file, node, key)};
+  const std::string toml = toml_text(node);
+  return {key, toml, node.is_string() ? *node.value<std::string>() : toml, at(file, node, key)};
 }
 
 // The dotted keys under a table and their nodes: "solver.name" may be written quoted or as
@@ -54,9 +63,14 @@ void flatten(const toml::table& table, const std::string& prefix, std::vector<st
   }
 }
 
+// In the order written (toml++ keeps a table's keys sorted): the columns follow the file.
 std::vector<std::pair<std::string, const toml::node*>> flattened(const toml::node* node) {
   std::vector<std::pair<std::string, const toml::node*>> out;
   if (node && node->as_table()) flatten(*node->as_table(), "", &out);
+  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+    const toml::source_position pa = a.second->source().begin, pb = b.second->source().begin;
+    return pa.line != pb.line ? pa.line < pb.line : pa.column < pb.column;
+  });
   return out;
 }
 
