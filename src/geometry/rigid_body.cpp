@@ -269,6 +269,82 @@ std::optional<SurfacePoint> RigidBody::first_entry_placed(const Eigen::Vector3d&
   return std::nullopt;
 }
 
+void RigidBody::wrap_edges_sharper_than(double angle_deg) {
+  if (!(angle_deg > 0.0 && angle_deg < 180.0)) throw std::invalid_argument("an edge's angle must be in (0, 180) degrees");
+  const double cos_limit = std::cos(angle_deg * M_PI / 180.0);
+  const auto& V = mesh_.vertices;
+  const auto& T = mesh_.triangles;
+  const EdgeBuckets buckets = bucket_edges(T, V.size());
+  sharp_edges_.clear();
+  sharp_edge_at_.assign(T.size(), {-1, -1, -1});
+  for (std::size_t low = 0; low < V.size(); ++low) {
+    std::vector<EdgeCorner> bucket(buckets.corners.begin() + buckets.start[low],
+                                   buckets.corners.begin() + buckets.start[low + 1]);
+    std::sort(bucket.begin(), bucket.end());
+    for (std::size_t first = 0, last = 0; first < bucket.size(); first = last) {
+      for (last = first; last < bucket.size() && bucket[last].high == bucket[first].high;) ++last;
+      if (last - first != 2) continue;  // a rim, or more than two faces: no wedge to wrap
+      const std::uint32_t c1 = bucket[first].corner, c2 = bucket[first + 1].corner;
+      const Eigen::Vector3d& n1 = face_normals_[c1 / 3];
+      const Eigen::Vector3d& n2 = face_normals_[c2 / 3];
+      if (n1.isZero() || n2.isZero() || n1.dot(n2) > cos_limit) continue;
+      // Convex where the second face's far corner lies behind the first face.
+      const Eigen::Vector3d& far = V[T[c2 / 3][(c2 % 3 + 2) % 3]];
+      if ((far - V[low]).dot(n1) >= 0.0) continue;
+      const int index = static_cast<int>(sharp_edges_.size());
+      sharp_edges_.push_back({V[low], V[static_cast<std::size_t>(bucket[first].high)], n1, n2});
+      sharp_edge_at_[c1 / 3][c1 % 3] = sharp_edge_at_[c2 / 3][c2 % 3] = index;
+    }
+  }
+  wrap_angle_deg_ = angle_deg;
+}
+
+std::optional<EdgeWrap> RigidBody::wrap(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  if (sharp_edges_.empty()) return std::nullopt;
+  const Eigen::Vector3d pa = to_placed(a), pb = to_placed(b);
+  // A segment under an edge passes through the body, so it crosses its surface; stretched by a
+  // millionth at each end so that a node resting on a face still counts the crossing there. One
+  // ray rules out most springs before any edge is looked at.
+  const Eigen::Vector3d margin = 1e-6 * (pb - pa);
+  if (!bvh_->first_hit(pa - margin, pb - pa + 2.0 * margin, 0.0, 1.0)) return std::nullopt;
+  // An edge a segment wraps lies within its length of the segment (wrap_over), so within 1.5
+  // lengths of its middle.
+  const double radius = 1.5 * (pb - pa).norm();
+  std::vector<int> near;
+  bvh_->visit_near(0.5 * (pa + pb), radius, [&](int triangle) {
+    for (const int e : sharp_edge_at_[static_cast<std::size_t>(triangle)])
+      if (e >= 0 && std::find(near.begin(), near.end(), e) == near.end()) near.push_back(e);
+    return radius;
+  });
+  std::sort(near.begin(), near.end());  // the same choice whatever order the BVH visits in
+  auto found = choose_wrap(near, pa, pb);
+  if (found && moved_) {
+    found->point = pose_ * found->point;
+    found->axis = pose_.linear() * found->axis;
+  }
+  return found;
+}
+
+// Near a corner a segment may pass under several edges. The string takes the shortest way over
+// one of them whose two legs pass under none of the others (over a box's top edge rather than
+// round its vertical edge below); where every way cuts another edge, the longest, the one that
+// gives back most of the corner.
+std::optional<EdgeWrap> RigidBody::choose_wrap(const std::vector<int>& edges, const Eigen::Vector3d& a,
+                                               const Eigen::Vector3d& b) const {
+  std::optional<EdgeWrap> shortest_clear, longest;
+  for (const int e : edges) {
+    const auto w = wrap_over(sharp_edges_[static_cast<std::size_t>(e)], a, b);
+    if (!w) continue;
+    if (!longest || w->length > longest->length) longest = w;
+    const bool clear = std::none_of(edges.begin(), edges.end(), [&](int other) {
+      const SharpEdge& edge = sharp_edges_[static_cast<std::size_t>(other)];
+      return other != e && (wrap_over(edge, a, w->point) || wrap_over(edge, w->point, b));
+    });
+    if (clear && (!shortest_clear || w->length < shortest_clear->length)) shortest_clear = w;
+  }
+  return shortest_clear ? shortest_clear : longest;
+}
+
 bool RigidBody::segment_crosses(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
   const Eigen::Vector3d start = to_placed(from);
   const Eigen::Vector3d direction = to_placed(to) - start;

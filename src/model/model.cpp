@@ -40,6 +40,14 @@ std::vector<std::string> Model::modelled() const {
                     body.name().c_str());
       lines.push_back(text);
     }
+  for (const RigidBody& body : bodies)
+    if (body.wrap_angle_deg() > 0.0) {
+      char text[240];
+      std::snprintf(text, sizeof text,
+                    "edge contact: springs wrap the %d convex edges of body '%s' whose faces turn by %.6g degrees or more",
+                    body.sharp_edge_count(), body.name().c_str(), body.wrap_angle_deg());
+      lines.push_back(text);
+    }
   return lines;
 }
 
@@ -53,6 +61,10 @@ bool Model::resists_bending() const {
 
 bool Model::has_friction() const {
   return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.friction() > 0.0; });
+}
+
+bool Model::wraps_edges() const {
+  return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.wrap_angle_deg() > 0.0; });
 }
 
 int Model::load_steps() const {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "fabform/model/spring_path.hpp"
+
 namespace fabform {
 namespace {
 
@@ -33,6 +35,14 @@ double depth_inside(const RigidBody& body, const Eigen::Vector3d& a, const Eigen
   return std::max({depth, depth_at(body, a, b, 0.5 * (lo + hi)), 0.0});
 }
 
+// How deep the straight segment a–b reaches into some body; 0 when it stays out.
+double deepest_into(const Model& model, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  double deepest = 0.0;
+  for (const RigidBody& body : model.bodies)
+    if (body.segment_crosses(a, b)) deepest = std::max(deepest, depth_inside(body, a, b));
+  return deepest;
+}
+
 }  // namespace
 
 SpringCuts find_spring_cuts(const Model& model, const std::vector<Eigen::Vector3d>& x) {
@@ -43,14 +53,13 @@ SpringCuts find_spring_cuts(const Model& model, const std::vector<Eigen::Vector3
     const Eigen::Vector3d& a = x[static_cast<std::size_t>(springs[s].a)];
     const Eigen::Vector3d& b = x[static_cast<std::size_t>(springs[s].b)];
     if (!a.allFinite() || !b.allFinite()) continue;
-    for (const RigidBody& body : model.bodies) {
-      if (!body.segment_crosses(a, b)) continue;
-      const double depth = depth_inside(body, a, b);
-      if (depth <= kCutShare * springs[s].rest_length) continue;  // a chord of a curve, or grazing
-      ++cuts.springs;
-      if (depth > cuts.deepest_m) cuts.deepest_m = depth, cuts.deepest_spring = static_cast<int>(s);
-      break;
-    }
+    // A spring wrapped over an edge runs in two legs, each of which may cut another feature.
+    const auto wrap = spring_wrap(model, springs[s], a, b);
+    const double depth = wrap ? std::max(deepest_into(model, a, wrap->point), deepest_into(model, wrap->point, b))
+                              : deepest_into(model, a, b);
+    if (depth <= kCutShare * springs[s].rest_length) continue;  // a chord of a curve, or grazing
+    ++cuts.springs;
+    if (depth > cuts.deepest_m) cuts.deepest_m = depth, cuts.deepest_spring = static_cast<int>(s);
   }
   return cuts;
 }

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <limits>
 
-#include "fabform/fabric/spring.hpp"
+#include "fabform/model/spring_path.hpp"
 
 namespace fabform {
 namespace {
@@ -22,7 +22,7 @@ double deformation_sum(const Model& model, const std::vector<Eigen::Vector3d>& x
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
     const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
-    const double deformation = std::abs((b - a).norm() - spring.rest_length);
+    const double deformation = std::abs(spring_path_length(model, spring, a, b) - spring.rest_length);
     // A length computed from coordinates is only as exact as they are: a fabric laid out at
     // rest reads deformations of ~1e-17 m, and relax's step Σ|d|/C would then be as small.
     const double rounding =
@@ -40,7 +40,7 @@ NodeStrains node_strains(const Model& model, const std::vector<Eigen::Vector3d>&
   for (const Spring& spring : model.fabric.springs()) {
     if (spring.kind != SpringKind::warp && spring.kind != SpringKind::weft) continue;
     const auto a = static_cast<std::size_t>(spring.a), b = static_cast<std::size_t>(spring.b);
-    const double strain = spring_strain(x[a], x[b], spring.rest_length);
+    const double strain = spring_path_strain(model, spring, x[a], x[b]);
     auto& field = spring.kind == SpringKind::warp ? strains.warp : strains.weft;
     auto& count = spring.kind == SpringKind::warp ? warp_count : weft_count;
     field[a] += strain, field[b] += strain;

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdio>
+#include <optional>
 
 #include "fabform/fabric/spring.hpp"
 #include "fabform/model/model.hpp"
 #include "fabform/model/spring_energy.hpp"
+#include "fabform/model/spring_path.hpp"
+#include "fabform/model/wrapped_spring.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -66,7 +69,7 @@ Eigen::Vector3d SpringTerm::force_at(const Model& model, const Positions& x, int
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     if (!covers(spring.kind)) continue;
     const int other = spring.a == node ? spring.b : spring.a;
-    force += spring_force_on_a(at, at_index(x, other), spring, model.table(spring.kind));
+    force += spring_path_force(model, spring, at, at_index(x, other));
   }
   return force;
 }
@@ -81,8 +84,7 @@ double SpringTerm::energy(const Model& model, const Positions& x) const {
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     const Spring& spring = springs[static_cast<std::size_t>(i)];
     if (covers(spring.kind))
-      energies[static_cast<std::size_t>(i)] =
-          spring_energy(at_index(x, spring.a), at_index(x, spring.b), spring, model.table(spring.kind));
+      energies[static_cast<std::size_t>(i)] = spring_path_energy(model, spring, at_index(x, spring.a), at_index(x, spring.b));
   }
   double energy = 0.0;
   for (const double e : energies) energy += e;
@@ -94,9 +96,8 @@ double SpringTerm::node_energy(const Model& model, const Positions& x, int node,
   for (const int s : model.fabric.springs_at(node)) {
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     if (!covers(spring.kind)) continue;
-    const TensionTable& table = model.table(spring.kind);
-    energy += spring.a == node ? spring_energy(at, at_index(x, spring.b), spring, table)
-                               : spring_energy(at_index(x, spring.a), at, spring, table);
+    energy += spring.a == node ? spring_path_energy(model, spring, at, at_index(x, spring.b))
+                               : spring_path_energy(model, spring, at_index(x, spring.a), at);
   }
   return energy;
 }
@@ -109,19 +110,36 @@ double SpringTerm::node_energy_change(const Model& model, const Positions& x, in
 void SpringTerm::add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const {
   const std::vector<Spring>& springs = model.fabric.springs();
   std::vector<Eigen::Matrix3d> stiffness(springs.size());
+  // A spring over an edge couples its ends by a full 6 × 6 block; kept only where a body wraps.
+  const bool wraps = model.wraps_edges();
+  std::vector<std::optional<Matrix6d>> wrapped(wraps ? springs.size() : 0);
 #pragma omp parallel for schedule(static) if (springs.size() >= kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(springs.size()); ++i) {
-    const Spring& s = springs[static_cast<std::size_t>(i)];
-    if (covers(s.kind))
-      stiffness[static_cast<std::size_t>(i)] =
-          projected_spring_stiffness(at_index(x, s.a), at_index(x, s.b), s, model.table(s.kind));
+    const auto k = static_cast<std::size_t>(i);
+    const Spring& s = springs[k];
+    if (!covers(s.kind)) continue;
+    const Eigen::Vector3d &xa = at_index(x, s.a), &xb = at_index(x, s.b);
+    if (wraps)
+      if (const auto wrap = spring_wrap(model, s, xa, xb)) {
+        wrapped[k] = wrapped_spring_hessian(xa, xb, *wrap, s, model.table(s.kind), true);
+        continue;
+      }
+    stiffness[k] = projected_spring_stiffness(xa, xb, s, model.table(s.kind));
   }
-  // A spring between a and b adds [[K, −K], [−K, K]].
   for (std::size_t i = 0; i < springs.size(); ++i) {
     if (!covers(springs[i].kind)) continue;
-    sink.add(springs[i].a, springs[i].a, stiffness[i]);
-    sink.add(springs[i].b, springs[i].b, stiffness[i]);
-    sink.add(springs[i].b, springs[i].a, -stiffness[i]);
+    const int a = springs[i].a, b = springs[i].b;
+    if (wraps && wrapped[i]) {
+      const Matrix6d& h = *wrapped[i];
+      sink.add(a, a, h.topLeftCorner<3, 3>());
+      sink.add(b, b, h.bottomRightCorner<3, 3>());
+      sink.add(a, b, h.topRightCorner<3, 3>());
+      continue;
+    }
+    // A straight spring between a and b adds [[K, −K], [−K, K]].
+    sink.add(a, a, stiffness[i]);
+    sink.add(b, b, stiffness[i]);
+    sink.add(b, a, -stiffness[i]);
   }
 }
 

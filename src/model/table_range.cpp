@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "fabform/fabric/spring.hpp"
+#include "fabform/model/spring_path.hpp"
 
 namespace fabform {
 namespace {
@@ -52,8 +52,8 @@ std::vector<std::string> table_range_warnings(const Model& model,
   for (const Spring& spring : model.fabric.springs()) {
     const auto kind = static_cast<std::size_t>(spring.kind);
     const TensionTable& table = model.table(spring.kind);
-    const double strain = spring_strain(x[static_cast<std::size_t>(spring.a)],
-                                        x[static_cast<std::size_t>(spring.b)], spring.rest_length);
+    const double strain = spring_path_strain(model, spring, x[static_cast<std::size_t>(spring.a)],
+                                             x[static_cast<std::size_t>(spring.b)]);
     ++total[kind];
     RangeCount& c = count[kind];
     if (strain < kCollapsedStrain && table.min_strain() >= 0.0) {

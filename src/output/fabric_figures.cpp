@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "fabform/fabric/spring.hpp"
+#include "fabform/model/spring_path.hpp"
 
 namespace fabform {
 namespace {
@@ -25,7 +25,8 @@ int spring_between(const Fabric& fabric, int p, int q) {
   return -1;
 }
 
-Cell formed_cell(const Fabric& fabric, const Face& face, const std::vector<Eigen::Vector3d>& x) {
+Cell formed_cell(const Model& model, const Face& face, const std::vector<Eigen::Vector3d>& x) {
+  const Fabric& fabric = model.fabric;
   double sum[2] = {0.0, 0.0};
   int count[2] = {0, 0};
   for (int c = 0; c < face.corners; ++c) {
@@ -34,18 +35,18 @@ Cell formed_cell(const Fabric& fabric, const Face& face, const std::vector<Eigen
     if (s < 0) continue;
     const Spring& spring = fabric.springs()[static_cast<std::size_t>(s)];
     const int kind = spring.kind == SpringKind::warp ? 0 : 1;
-    sum[kind] += spring_strain(x[static_cast<std::size_t>(spring.a)], x[static_cast<std::size_t>(spring.b)],
-                               spring.rest_length);
+    sum[kind] += spring_path_strain(model, spring, x[static_cast<std::size_t>(spring.a)],
+                                    x[static_cast<std::size_t>(spring.b)]);
     ++count[kind];
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   return {face_area(face, x), count[0] ? sum[0] / count[0] : nan, count[1] ? sum[1] / count[1] : nan};
 }
 
-std::vector<Cell> formed_cells(const Fabric& fabric, const std::vector<Eigen::Vector3d>& x) {
+std::vector<Cell> formed_cells(const Model& model, const std::vector<Eigen::Vector3d>& x) {
   std::vector<Cell> cells;
-  cells.reserve(fabric.faces().size());
-  for (const Face& face : fabric.faces()) cells.push_back(formed_cell(fabric, face, x));
+  cells.reserve(model.fabric.faces().size());
+  for (const Face& face : model.fabric.faces()) cells.push_back(formed_cell(model, face, x));
   return cells;
 }
 
@@ -55,7 +56,7 @@ StrainPeak peak_of(const Model& model, const std::vector<Eigen::Vector3d>& x, Sp
   peak.strain = -sign * std::numeric_limits<double>::infinity();
   for (const Spring& s : model.fabric.springs()) {
     if (s.kind != kind) continue;
-    const double strain = spring_strain(x[s.a], x[s.b], s.rest_length);
+    const double strain = spring_path_strain(model, s, x[s.a], x[s.b]);
     if (sign * strain > sign * peak.strain)
       peak = {strain, model.fabric.i_of(s.a), model.fabric.j_of(s.a), 0.5 * (x[s.a] + x[s.b])};
   }
@@ -119,7 +120,7 @@ double contact_area(const Fabric& fabric, const std::vector<Cell>& cells,
 
 FabricFigures fabric_figures(const Model& model, const std::vector<Eigen::Vector3d>& x,
                              const std::vector<unsigned char>& contact) {
-  const std::vector<Cell> cells = formed_cells(model.fabric, x);
+  const std::vector<Cell> cells = formed_cells(model, x);
   FabricFigures f;
   f.area_flat_m2 = model.fabric.flat_area();
   for (const Cell& c : cells) f.area_formed_m2 += c.area_m2;

@@ -82,7 +82,9 @@ RigidBody build_body(const BodySpec& spec) {
   if (!within_range(mesh.vertices))
     throw InputError(spec.where, "the placed mesh reaches beyond 1e6 m: check units, scale and translation");
   try {
-    return RigidBody(spec.name, std::move(mesh), spec.friction);
+    RigidBody body(spec.name, std::move(mesh), spec.friction);
+    if (spec.wrap_edges_deg > 0.0) body.wrap_edges_sharper_than(spec.wrap_edges_deg);
+    return body;
   } catch (const std::invalid_argument& error) {
     throw InputError({spec.mesh_path, 0, ""}, error.what());
   }

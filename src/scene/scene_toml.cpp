@@ -256,10 +256,16 @@ BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t ind
   body.friction_where = r.locate_key("friction");
   if (!(body.friction >= 0.0 && body.friction <= 10.0))
     r.fail("friction", "Coulomb's coefficient must be in [0, 10] (0: frictionless)");
+  if (r.has("wrap_edges_deg")) {
+    body.wrap_edges_deg = r.number("wrap_edges_deg", 0.0);
+    body.wrap_edges_where = r.locate_key("wrap_edges_deg");
+    if (!(body.wrap_edges_deg > 0.0 && body.wrap_edges_deg < 180.0))
+      r.fail("wrap_edges_deg", "the angle between an edge's faces from which springs wrap it must be in (0, 180) degrees");
+  }
   std::string field;
   if (const std::string why = body.placement.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (r.has("path")) read_path(r.table("path", false), &body);
-  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m", "friction", "path"});
+  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m", "friction", "wrap_edges_deg", "path"});
   return body;
 }
 
@@ -536,6 +542,18 @@ void refuse_friction_in_relax(const Scene& scene, TableReader& solver) {
                               "), which relax cannot carry (seed 003's rule has no stick or slip): use newton or dynamic");
 }
 
+// A spring over an edge is as stiff across itself as its tension over its shorter leg, which
+// no time step bounds as a node nears the edge: explicit dynamics cannot carry it.
+void refuse_wrapped_edges_in_dynamic(const Scene& scene, TableReader& solver) {
+  if (scene.solver.name != "dynamic") return;
+  for (const BodySpec& body : scene.bodies)
+    if (body.wrap_edges_deg > 0.0)
+      solver.fail("name", "body '" + body.name + "' lets springs wrap its edges (" +
+                              (body.wrap_edges_where.line > 0 ? "line " + std::to_string(body.wrap_edges_where.line)
+                                                              : std::string("from the command line")) +
+                              "), which dynamic cannot carry (no stable time step bounds a wrapped spring): use newton or relax");
+}
+
 Scene read_scene(const toml::table& root, const std::string& path,
                  const OverriddenKeys& overridden) {
   Scene scene;
@@ -572,6 +590,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
                             "), which depends on the fabric's velocity (seed 004): only solver dynamic models it, not " +
                             scene.solver.name);
   refuse_friction_in_relax(scene, solver);
+  refuse_wrapped_edges_in_dynamic(scene, solver);
   if (scene.clamp.on && scene.solver.name != "newton")
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only newton models, not " + scene.solver.name);

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "fabform/geometry/closest_point.hpp"
+#include "fabform/geometry/edge_wrap.hpp"
 #include "fabform/geometry/triangle_mesh.hpp"
 
 namespace fabform {
@@ -50,6 +51,18 @@ class RigidBody {
   /// Whether the segment crosses the surface at all, in either direction.
   bool segment_crosses(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
 
+  /// Lets springs wrap the body's convex edges whose two faces turn by at least `angle_deg`
+  /// (edge_wrap.hpp): a CAD part's sharp edges, or a fillet's facets when the angle is below
+  /// theirs. Throws std::invalid_argument for an angle outside (0, 180).
+  void wrap_edges_sharper_than(double angle_deg);
+  /// The angle springs wrap edges from; 0 when they wrap none (contact is the nodes' alone).
+  double wrap_angle_deg() const { return wrap_angle_deg_; }
+  /// How many edges springs may wrap.
+  int sharp_edge_count() const { return static_cast<int>(sharp_edges_.size()); }
+  /// The segment a–b's wrap over a wrappable edge it passes under, where the body now is (near a
+  /// corner, the shortest whose legs pass under no other edge); none when it passes under none.
+  std::optional<EdgeWrap> wrap(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+
   /// Moves the body rigidly to `pose` (a rotation and translation of its mesh as placed): a
   /// tool travelling along its path. Every query above answers for the body where it now is;
   /// the BVH stays as built, queries are carried into the placed frame and back.
@@ -82,6 +95,8 @@ class RigidBody {
   std::optional<SurfacePoint> first_entry_placed(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
   Eigen::Vector3d to_placed(const Eigen::Vector3d& p) const { return moved_ ? Eigen::Vector3d(inverse_ * p) : p; }
   SurfacePoint to_posed(SurfacePoint s) const;
+  std::optional<EdgeWrap> choose_wrap(const std::vector<int>& edges, const Eigen::Vector3d& a,
+                                      const Eigen::Vector3d& b) const;
 
   std::string name_;
   TriangleMesh mesh_;
@@ -92,6 +107,9 @@ class RigidBody {
   std::vector<Eigen::Vector3d> vertex_normals_;
   std::vector<std::array<bool, 3>> edge_on_rim_;  // per triangle: edge used by this face only
   std::vector<unsigned char> vertex_on_rim_;
+  std::vector<SharpEdge> sharp_edges_;              // in the placed frame
+  std::vector<std::array<int, 3>> sharp_edge_at_;   // per triangle: 01, 12, 20's index there, or -1
+  double wrap_angle_deg_ = 0.0;
   std::unique_ptr<EmbreeScene> bvh_;
   Eigen::Isometry3d pose_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d inverse_ = Eigen::Isometry3d::Identity();

@@ -56,6 +56,8 @@ struct Model {
   bool resists_bending() const;
   /// Whether some body holds the fabric by friction.
   bool has_friction() const;
+  /// Whether some body lets springs wrap its edges (spring_path.hpp).
+  bool wraps_edges() const;
   /// K, the load steps in which the bodies travel; 0 when none moves.
   int load_steps() const;
 };

@@ -25,6 +25,10 @@ struct BodySpec {
   Placement placement;
   double friction = 0.0;  // Coulomb's μ between the fabric and this body; 0: frictionless
   SourceLocation friction_where;
+  // Springs wrap the body's convex edges whose faces turn by at least this much (degrees); 0:
+  // contact is the nodes' alone, as in seed 003.
+  double wrap_edges_deg = 0.0;
+  SourceLocation wrap_edges_where;
   ToolPath path;               // [body.path]: its travel in load steps (steps 0: it stays put)
   bool pivot_given = false;    // else the turn is about the placed mesh's bounding box's centre
   SourceLocation steps_where;  // path.steps, for messages
