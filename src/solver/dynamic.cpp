@@ -225,6 +225,8 @@ Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& op
                 const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("dynamic: " + why);
+  if (model.wraps_edges())
+    throw std::invalid_argument("dynamic: no stable time step bounds a spring wrapped over an edge; use newton or relax");
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Dynamics dynamics(model, state, options);
