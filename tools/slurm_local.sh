@@ -53,6 +53,9 @@ ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 MpiDefault=none
 SchedulerType=sched/backfill
+# Start the next case as soon as one ends: Slurm otherwise waits up to 3 s (batch_sched_delay)
+# between scheduling passes for batch jobs, which would dominate short cases.
+SchedulerParameters=batch_sched_delay=0
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 ReturnToService=2

@@ -16,6 +16,8 @@ import csv
 import html
 import json
 import math
+import multiprocessing
+import os
 import pathlib
 import sys
 
@@ -148,12 +150,13 @@ window.addEventListener("load", () => {{
 def make_report(folder: pathlib.Path) -> pathlib.Path:
     spec, rows = read_study(folder)
     varied = spec["varied"]
-    pictures = []
-    for f, figure in enumerate([*spec["figures"], "iterations", "wall_seconds"]):
-        for k, key in enumerate(varied):
-            name = f"study_{f}_{k}.png"
-            plot(folder, rows, figure, key, [o for o in varied if o != key], name)
-            pictures.append((name, f"{figure} against {key}"))
+    plots = [(folder, rows, figure, key, [o for o in varied if o != key], f"study_{f}_{k}.png")
+             for f, figure in enumerate([*spec["figures"], "iterations", "wall_seconds"])
+             for k, key in enumerate(varied)]
+    # The plots on every core: a study waits for its report, and its pictures are independent.
+    with multiprocessing.get_context("fork").Pool(max(1, min(len(plots), os.cpu_count() or 1))) as pool:
+        pool.starmap(plot, plots)
+    pictures = [(name, f"{figure} against {key}") for _, _, figure, key, _, name in plots]
     path = folder / "study.html"
     report.write_text(path, page(spec, rows, pictures))
     return path
