@@ -115,11 +115,7 @@ int study(const StudyArguments& args) {
     check_new_study_folder(dir);
   }
   if (args.on == "slurm") require_slurm_commands();
-  const std::vector<int> todo = resuming ? cases_to_run(spec, dir) : [&] {
-    std::vector<int> all(spec.cases.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-    return all;
-  }();
+  const std::vector<int> todo = cases_to_run(spec, dir);  // a new study's folder holds none yet
   if (!resuming) {
     fs::create_directories(fs::path(dir) / "cases");
     write_study_record(dir, spec);

@@ -1,12 +1,14 @@
 // `fabform study` on the real binary: a small dome study in the local pool writes a run folder
 // per case, study.json, study.csv and study.html; --resume redoes only a case whose result is
-// gone; every figure result_figures.hpp names is in real results (a drape test and a run in
-// load steps); bad input is one line, exit status 2, nothing written.
+// gone; every figure result_figures.hpp names for a scene is in its real results (a drape test
+// and a run in load steps); bad input is one line, exit status 2, nothing written.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <sstream>
 
+#include "fabform/scene/scene_toml.hpp"
+#include "fabform/study/result_figures.hpp"
 #include "support/cli.hpp"
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
@@ -71,25 +73,20 @@ TEST(StudyCommand, LocalPoolWritesEveryCaseTheTableAndTheReport) {
 
 TEST(StudyCommand, EveryKnownFigureIsInRealResults) {
   test::TempDir dir;
-  const std::string drape_figures =
-      "[\"iterations\", \"residual_N\", \"residual_recomputed_N\", \"tolerance_N\", \"force_scale_N\", \"tolerance_relative\","
-      " \"residual_relative\", \"wall_seconds\", \"solve_seconds\", \"threads\", \"nodes\", \"contact_nodes\","
-      " \"max_penetration_m\", \"figures.area_flat_m2\", \"figures.area_formed_m2\", \"figures.contact_area_m2\","
-      " \"figures.draw_in_max_m\", \"figures.springs_cutting_bodies\", \"figures.deepest_spring_cut_m\","
-      " \"figures.sliding_nodes\", \"figures.stuck_nodes\", \"fabric.nodes\", \"fabric.faces\", \"figures.max_warp_strain\","
-      " \"figures.max_weft_strain.strain\", \"figures.min_warp_strain\", \"figures.min_weft_strain\"";
-  dir.write("cusick.toml", "[study]\nscene = \"" + test::source_path("scenes/cusick.toml") + "\"\nfigures = " + drape_figures +
-                               ", \"drape_coefficient\", \"drape.coefficient\", \"drape.shadow_area_m2\", \"drape.specimen_area_m2\","
-                               " \"drape.support_area_m2\", \"drape.folds\", \"drape.shadow_pieces\"]\n"
-                               "[grid]\n\"fabric.divisions\" = [12]\n");
-  dir.write("cup.toml", "[study]\nscene = \"" + test::source_path("scenes/cup.toml") + "\"\nfigures = " + drape_figures +
-                            ", \"load_steps\"]\n[study.set]\n\"body.0.path.steps\" = 2\n[grid]\n\"fabric.divisions\" = [[10, 10]]\n");
-  for (const char* study : {"cusick", "cup"}) {
-    const test::Outcome done = test::run_fabform(dir, std::string("study ") + study + ".toml --out " + study + "_out --jobs 1");
+  const std::pair<const char*, std::string> studies[] = {
+      {"cusick", "[grid]\n\"fabric.divisions\" = [12]\n"},
+      {"cup", "[study.set]\n\"body.0.path.steps\" = 2\n[grid]\n\"fabric.divisions\" = [[10, 10]]\n"}};
+  for (const auto& [scene, cases] : studies) {
+    const std::string scene_file = test::source_path(std::string("scenes/") + scene + ".toml");
+    std::string figures;
+    for (const std::string& path : result_figure_paths(load_scene(scene_file))) figures += (figures.empty() ? "\"" : ", \"") + path + "\"";
+    EXPECT_NE(figures.find(std::string(scene) == "cusick" ? "\"drape.folds\"" : "\"load_steps\""), std::string::npos);
+    dir.write(std::string(scene) + ".toml", "[study]\nscene = \"" + scene_file + "\"\nfigures = [" + figures + "]\n" + cases);
+    const test::Outcome done = test::run_fabform(dir, std::string("study ") + scene + ".toml --out " + scene + "_out --jobs 1");
     ASSERT_EQ(done.status, 0) << done.err;
-    const std::vector<std::string> table = lines(slurp(dir.path(std::string(study) + "_out/study.csv")));
+    const std::vector<std::string> table = lines(slurp(dir.path(std::string(scene) + "_out/study.csv")));
     ASSERT_EQ(table.size(), 2u);
-    EXPECT_EQ(table[1].find(",,"), std::string::npos) << study << ": a figure is missing:\n" << table[0] << "\n" << table[1];
+    EXPECT_EQ(table[1].find(",,"), std::string::npos) << scene << ": a figure is missing:\n" << table[0] << "\n" << table[1];
   }
 }
 
