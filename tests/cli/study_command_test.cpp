@@ -83,7 +83,7 @@ TEST(StudyCommand, EveryKnownFigureIsInRealResults) {
     EXPECT_NE(figures.find(std::string(scene) == "cusick" ? "\"drape.folds\"" : "\"load_steps\""), std::string::npos);
     dir.write(std::string(scene) + ".toml", "[study]\nscene = \"" + scene_file + "\"\nfigures = [" + figures + "]\n" + cases);
     const test::Outcome done = test::run_fabform(dir, std::string("study ") + scene + ".toml --out " + scene + "_out --jobs 1");
-    ASSERT_EQ(done.status, 0) << done.err;
+    ASSERT_TRUE(done.status == 0 || done.status == 3) << done.err;  // converged or not, a result holds every figure
     const std::vector<std::string> table = lines(slurp(dir.path(std::string(scene) + "_out/study.csv")));
     ASSERT_EQ(table.size(), 2u);
     EXPECT_EQ(table[1].find(",,"), std::string::npos) << scene << ": a figure is missing:\n" << table[0] << "\n" << table[1];
