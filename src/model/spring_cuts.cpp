@@ -55,6 +55,7 @@ SpringCuts find_spring_cuts(const Model& model, const std::vector<Eigen::Vector3
     if (!a.allFinite() || !b.allFinite()) continue;
     // A spring wrapped over an edge runs in two legs, each of which may cut another feature.
     const auto wrap = spring_wrap(model, springs[s], a, b);
+    cuts.over_edges += wrap ? 1 : 0;
     const double depth = wrap ? std::max(deepest_into(model, a, wrap->point), deepest_into(model, wrap->point, b))
                               : deepest_into(model, a, b);
     if (depth <= kCutShare * springs[s].rest_length) continue;  // a chord of a curve, or grazing

@@ -121,6 +121,7 @@ std::string result_json(const RunRecord& run) {
   j["figures"]["draw_in_max_m"] = edge.max_node < 0 ? nlohmann::json(nullptr) : number(edge.max_m);
   j["figures"]["draw_in_max_node"] = edge.max_node < 0 ? nlohmann::json(nullptr) : nlohmann::json(run.model.fabric.node_name(edge.max_node));
   j["figures"]["springs_cutting_bodies"] = run.check.spring_cuts.springs;
+  j["figures"]["springs_over_edges"] = run.check.spring_cuts.over_edges;
   j["figures"]["deepest_spring_cut_m"] = run.check.spring_cuts.deepest_m;
   j["figures"]["sliding_nodes"] = run.check.sliding_nodes;
   j["figures"]["stuck_nodes"] = run.check.stuck_nodes;
