@@ -259,8 +259,9 @@ BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t ind
   if (r.has("wrap_edges_deg")) {
     body.wrap_edges_deg = r.number("wrap_edges_deg", 0.0);
     body.wrap_edges_where = r.locate_key("wrap_edges_deg");
-    if (!(body.wrap_edges_deg > 0.0 && body.wrap_edges_deg < 180.0))
-      r.fail("wrap_edges_deg", "the angle between an edge's faces from which springs wrap it must be in (0, 180) degrees");
+    if (!(body.wrap_edges_deg >= 0.0 && body.wrap_edges_deg < 180.0))
+      r.fail("wrap_edges_deg",
+             "the angle between an edge's faces from which springs wrap it must be in (0, 180) degrees (0: none)");
   }
   std::string field;
   if (const std::string why = body.placement.invalid_reason(&field); !why.empty()) r.fail(field, why);

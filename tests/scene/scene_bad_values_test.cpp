@@ -277,7 +277,7 @@ const std::vector<KeyRow>& key_table() {
       {"body.0.translation_m",           T::vec3,      lift, A,   A,  A,   B,   _,    "body.0", {}},
       {"body.0.friction",                T::number,    arc,  A,   R,  A,   R,   _,    "",
        {{"cap", "10.0", A, kSame}, {"beyond_cap", "10.1", R, kSame}}},
-      {"body.0.wrap_edges_deg",          T::number,    lift, A,   R,  R,   R,   _,    "",
+      {"body.0.wrap_edges_deg",          T::number,    lift, A,   R,  A,   R,   _,    "",
        {{"right_angle", "90.0", A, kSame}, {"half_turn", "180.0", R, kSame}}},
       // The body travels 4 mm and turns 10° in four load steps; without a path it stays put.
       {"body.0.path",                    T::only_extras, lift, _, _,  _,   _,   _,    "",

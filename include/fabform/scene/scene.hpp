@@ -25,8 +25,8 @@ struct BodySpec {
   Placement placement;
   double friction = 0.0;  // Coulomb's μ between the fabric and this body; 0: frictionless
   SourceLocation friction_where;
-  // Springs wrap the body's convex edges whose faces turn by at least this much (degrees); 0:
-  // contact is the nodes' alone, as in seed 003.
+  // Springs wrap the body's convex edges whose faces turn by at least this much (degrees); 0, the
+  // default: contact is the nodes' alone, as in seed 003.
   double wrap_edges_deg = 0.0;
   SourceLocation wrap_edges_where;
   ToolPath path;               // [body.path]: its travel in load steps (steps 0: it stays put)
