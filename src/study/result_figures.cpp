@@ -20,8 +20,9 @@ std::vector<std::string> result_figure_paths(const Scene& scene) {
       "iterations", "residual_N", "residual_recomputed_N", "tolerance_N", "force_scale_N", "tolerance_relative",
       "residual_relative", "wall_seconds", "solve_seconds", "threads", "nodes", "contact_nodes",
       "max_penetration_m", "figures.area_flat_m2", "figures.area_formed_m2", "figures.contact_area_m2",
-      "figures.draw_in_max_m", "figures.springs_cutting_bodies", "figures.deepest_spring_cut_m",
-      "figures.sliding_nodes", "figures.stuck_nodes", "fabric.nodes", "fabric.faces"};
+      "figures.draw_in_max_m", "figures.springs_cutting_bodies", "figures.springs_over_edges",
+      "figures.deepest_spring_cut_m", "figures.sliding_nodes", "figures.stuck_nodes", "fabric.nodes", "fabric.faces",
+      "fabric.springs.warp", "fabric.springs.weft", "fabric.springs.shear", "fabric.springs.bend"};
   for (const char* peak : kPeaks) {
     paths.emplace_back(peak);
     paths.push_back(std::string(peak) + ".strain");

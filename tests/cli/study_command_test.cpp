@@ -4,8 +4,11 @@
 // and a run in load steps); bad input is one line, exit status 2, nothing written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "fabform/scene/scene_toml.hpp"
 #include "fabform/study/result_figures.hpp"
@@ -37,6 +40,20 @@ std::string without_wall_seconds(const std::string& table) {
   std::string out;
   for (const std::string& line : lines(table)) out += line.substr(0, line.rfind(',')) + "\n";
   return out;
+}
+
+// The dotted paths of the numbers in a JSON object, through objects only (not into arrays).
+std::vector<std::string> numbers_in(const nlohmann::json& object, const std::string& prefix = "") {
+  std::vector<std::string> paths;
+  for (const auto& [key, value] : object.items()) {
+    const std::string path = prefix.empty() ? key : prefix + "." + key;
+    if (value.is_object()) {
+      for (std::string& inner : numbers_in(value, path)) paths.push_back(std::move(inner));
+    } else if (value.is_number()) {
+      paths.push_back(path);
+    }
+  }
+  return paths;
 }
 
 TEST(StudyCommand, LocalPoolWritesEveryCaseTheTableAndTheReport) {
@@ -87,6 +104,10 @@ TEST(StudyCommand, EveryKnownFigureIsInRealResults) {
     const std::vector<std::string> table = lines(slurp(dir.path(std::string(scene) + "_out/study.csv")));
     ASSERT_EQ(table.size(), 2u);
     EXPECT_EQ(table[1].find(",,"), std::string::npos) << scene << ": a figure is missing:\n" << table[0] << "\n" << table[1];
+    // And the other way: every number result.json holds outside its lists is a known figure.
+    const std::vector<std::string> known = result_figure_paths(load_scene(scene_file));
+    for (const std::string& path : numbers_in(nlohmann::json::parse(slurp(dir.path(std::string(scene) + "_out/cases/0000/result.json")))))
+      EXPECT_NE(std::find(known.begin(), known.end(), path), known.end()) << scene << ": " << path << " is not a known figure";
   }
 }
 
