@@ -530,6 +530,11 @@ std::string key_on_line(std::string_view text, int line_number) {
   return "";
 }
 
+// Where a key was given, for a message: its line, or the command line's --set.
+std::string said_at(const SourceLocation& where) {
+  return where.line > 0 ? "line " + std::to_string(where.line) : std::string("from the command line");
+}
+
 // Seed 003's relaxation moves a node along its unbalanced force, which a stuck node has whatever
 // its history; friction needs the slip from where the node landed, which only newton and
 // dynamic carry.
@@ -537,9 +542,7 @@ void refuse_friction_in_relax(const Scene& scene, TableReader& solver) {
   if (scene.solver.name != "relax") return;
   for (const BodySpec& body : scene.bodies)
     if (body.friction > 0.0)
-      solver.fail("name", "body '" + body.name + "' has friction (" +
-                              (body.friction_where.line > 0 ? "line " + std::to_string(body.friction_where.line)
-                                                            : std::string("from the command line")) +
+      solver.fail("name", "body '" + body.name + "' has friction (" + said_at(body.friction_where) +
                               "), which relax cannot carry (seed 003's rule has no stick or slip): use newton or dynamic");
 }
 
@@ -549,9 +552,7 @@ void refuse_wrapped_edges_in_dynamic(const Scene& scene, TableReader& solver) {
   if (scene.solver.name != "dynamic") return;
   for (const BodySpec& body : scene.bodies)
     if (body.wrap_edges_deg > 0.0)
-      solver.fail("name", "body '" + body.name + "' lets springs wrap its edges (" +
-                              (body.wrap_edges_where.line > 0 ? "line " + std::to_string(body.wrap_edges_where.line)
-                                                              : std::string("from the command line")) +
+      solver.fail("name", "body '" + body.name + "' lets springs wrap its edges (" + said_at(body.wrap_edges_where) +
                               "), which dynamic cannot carry (no stable time step bounds a wrapped spring): use newton or relax");
 }
 
@@ -585,9 +586,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
   read_solver(solver, &scene);
   scene.tolerance_where = solver.locate_key("tolerance_relative");
   if (scene.wind.on && scene.solver.name != "dynamic")
-    solver.fail("name", "the scene has wind (" +
-                            (scene.wind.where.line > 0 ? "line " + std::to_string(scene.wind.where.line)
-                                                       : std::string("from the command line")) +
+    solver.fail("name", "the scene has wind (" + said_at(scene.wind.where) +
                             "), which depends on the fabric's velocity (seed 004): only solver dynamic models it, not " +
                             scene.solver.name);
   refuse_friction_in_relax(scene, solver);
