@@ -227,7 +227,9 @@ def summary_rows(result: dict) -> list:
         rows.append(("largest draw-in", f"{number(f['draw_in_max_m'] * 1000, 3)} mm at {f.get('draw_in_max_node', '?')}"))
     if f.get("springs_cutting_bodies"):
         rows.append(("springs cutting a body", f"{f['springs_cutting_bodies']}, the deepest "
-                                               f"{number(f['deepest_spring_cut_m'] * 1000, 3)} mm (contact is node-only)"))
+                                               f"{number(f['deepest_spring_cut_m'] * 1000, 3)} mm"))
+    if f.get("springs_over_edges"):
+        rows.append(("springs over a body's edges", f"{f['springs_over_edges']} (wrapped as a string over a corner)"))
     if "sliding_nodes" in f:
         rows.append(("on a body", f"{f['sliding_nodes']} nodes sliding, {f['stuck_nodes']} stuck"))
     if "load_steps" in result:
