@@ -337,17 +337,22 @@ def make_report(run: pathlib.Path) -> pathlib.Path:
     return path
 
 
-def main(argv) -> int:
+def report_main(argv, tool: str, folder: str, make) -> int:
+    """A report tool's command line: `tools/TOOL FOLDER`; exit 2 with one line on bad input."""
     if len(argv) != 1 or argv[0].startswith("-"):
-        print("usage: tools/report.py RUN_DIR", file=sys.stderr)
+        print(f"usage: tools/{tool} {folder}", file=sys.stderr)
         return 2
     try:
-        path = make_report(pathlib.Path(argv[0]))
+        path = make(pathlib.Path(argv[0]))
     except pc.InputError as error:
-        print(f"report.py: {error}", file=sys.stderr)
+        print(f"{tool}: {error}", file=sys.stderr)
         return 2
     print(f"wrote {path}")
     return 0
+
+
+def main(argv) -> int:
+    return report_main(argv, "report.py", "RUN_DIR", make_report)
 
 
 if __name__ == "__main__":

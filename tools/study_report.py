@@ -23,7 +23,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import plot_convergence as pc  # noqa: E402  (InputError)
-import report  # noqa: E402  (save_figure, write_text)
+import report  # noqa: E402  (save_figure, write_text, report_main)
 
 MAX_SERIES = 8  # more lines than this are one cloud of points
 
@@ -163,16 +163,7 @@ def make_report(folder: pathlib.Path) -> pathlib.Path:
 
 
 def main(argv) -> int:
-    if len(argv) != 1 or argv[0].startswith("-"):
-        print("usage: tools/study_report.py STUDY_DIR", file=sys.stderr)
-        return 2
-    try:
-        path = make_report(pathlib.Path(argv[0]))
-    except pc.InputError as error:
-        print(f"study_report.py: {error}", file=sys.stderr)
-        return 2
-    print(f"wrote {path}")
-    return 0
+    return report.report_main(argv, "study_report.py", "STUDY_DIR", make_report)
 
 
 if __name__ == "__main__":
