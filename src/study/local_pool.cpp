@@ -52,9 +52,10 @@ CaseEndings run_local_pool(const StudySpec& spec, const std::string& dir, const 
     running.erase(it);
     ++done;
     const std::string folder = case_folder(dir, index);
+    const std::string termination = case_termination(folder);
     if (case_state(folder) != CaseState::finished)
-      endings[index] = case_termination(folder) == "interrupted" ? "interrupted" : "failed";
-    if (case_termination(folder) != "converged") ++failed;
+      endings[index] = termination == "interrupted" ? "interrupted" : "failed";
+    if (termination != "converged") ++failed;
     progress.update(done, static_cast<int>(running.size()), failed);
   }
   return endings;
