@@ -154,9 +154,11 @@ int repair(const CheckArguments& args, const TriangleMesh& mesh, double metres_p
 int check(const CheckArguments& args) {
   double metres_per_unit = 1.0;
   if (args.units) parse_length_unit(*args.units, &metres_per_unit);
-  const TriangleMesh mesh = read_mesh(args.mesh);
+  std::vector<std::string> warnings;
+  const TriangleMesh mesh = read_mesh(args.mesh, &warnings);
   const MeshReport report = inspect_mesh(mesh);
   std::printf("mesh: %s\n", args.mesh.c_str());
+  for (const auto& warning : warnings) std::printf("  warning: %s\n", warning.c_str());
   line("units", args.units ? *args.units + " (given); lengths below in metres" : "not given, assumed m");
   print_report(report, metres_per_unit);
   for (const auto& remark : remarks(report)) std::printf("  note: %s\n", remark.c_str());
@@ -165,8 +167,7 @@ int check(const CheckArguments& args) {
   std::printf("verdict: %s\n", usable ? "usable for contact" : ("not usable for contact: " + why).c_str());
   if (args.repair_out) return repair(args, mesh, metres_per_unit);
   if (usable) return kExitDone;
-  const std::string hint = report.repairable() ? "; fabform check --repair OUT.obj fixes it" : "";
-  std::fprintf(stderr, "fabform: error: %s: %s%s\n", args.mesh.c_str(), why.c_str(), hint.c_str());
+  std::fprintf(stderr, "fabform: error: %s: %s\n", args.mesh.c_str(), report.contact_refusal().c_str());
   return kExitBadInput;
 }
 

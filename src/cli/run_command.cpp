@@ -93,12 +93,16 @@ int exit_status(Termination termination) {
   }
 }
 
-// What matters for contact in the bodies themselves (an open mold is fine; inverted normals are
-// not): found once, as CGAL's checks of a large mesh take a while.
-std::vector<std::string> body_warnings(const Model& model) {
+// What matters for contact in the bodies themselves, found once, as CGAL's checks of a large
+// mesh take a while: a body contact cannot use (inverted or inconsistent faces) is refused in
+// the words fabform check refuses its file with; self-intersections are warned about.
+std::vector<std::string> body_warnings(const Scene& scene, const Model& model) {
   std::vector<std::string> warnings;
-  for (const RigidBody& body : model.bodies)
-    for (const auto& w : inspect_mesh(body.mesh()).contact_warnings()) warnings.push_back("body '" + body.name() + "': " + w);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const MeshReport report = inspect_mesh(model.bodies[b].mesh());
+    if (const std::string why = report.contact_refusal(); !why.empty()) throw InputError({scene.bodies[b].mesh_path, 0, ""}, why);
+    for (const auto& w : report.contact_warnings()) warnings.push_back("body '" + model.bodies[b].name() + "': " + w);
+  }
   return warnings;
 }
 
@@ -183,7 +187,7 @@ int run(const RunArguments& args) {
                scene.name.c_str(), model.node_count(), model.bodies.size(),
                scene.solver.name.c_str(), scene.solver.tolerance_N(),
                start.recorded ? (", resumed after iteration " + std::to_string(so_far.iterations)).c_str() : "");
-  std::vector<std::string> of_model = body_warnings(model);  // found once: they do not change
+  std::vector<std::string> of_model = body_warnings(scene, model);  // found once: they do not change
   for (const auto& term : model.terms)
     if (std::string w = term->tolerance_warning(scene.solver.tolerance_N()); !w.empty()) of_model.push_back(std::move(w));
   const auto publish = [&](const SolverState& s, const Summary& summary) {

@@ -75,18 +75,33 @@ double signed_volume(const SurfaceMesh& mesh, const std::vector<Face>& faces) {
   return six_volume / 6.0;
 }
 
-// Per face, whether its vertex cycle runs the other way round from the same polygon of
-// `before` (face k is polygon k; vertices split by the orientation map back by position).
-std::vector<char> reversed_faces(const SurfaceMesh& mesh, const Soup& before) {
+// Per vertex of `mesh`, its index in `before`. orient_polygon_soup splits vertices where the
+// surface is not a manifold; the copies sit at their original's position, and `before` holds
+// each position once (duplicates are merged first).
+std::vector<std::size_t> original_vertices(const SurfaceMesh& mesh, const Soup& before) {
   std::map<Point, std::size_t> index;
   for (std::size_t i = 0; i < before.points.size(); ++i) index.emplace(before.points[i], i);
+  std::vector<std::size_t> original(mesh.number_of_vertices());
+  for (const auto v : mesh.vertices()) original[v.idx()] = index.at(mesh.point(v));
+  return original;
+}
+
+// Face f's corners as indices into `before`.
+Cycle corners(const SurfaceMesh& mesh, Face f, const std::vector<std::size_t>& original) {
+  Cycle c{};
+  std::size_t k = 0;
+  for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) c[k++] = original[v.idx()];
+  return c;
+}
+
+// Per face, whether its vertex cycle runs the other way round from the same polygon of
+// `before` (face k is polygon k).
+std::vector<char> reversed_faces(const SurfaceMesh& mesh, const Soup& before) {
+  const std::vector<std::size_t> original = original_vertices(mesh, before);
   std::vector<char> reversed(mesh.number_of_faces(), 0);
   for (const Face f : mesh.faces()) {
-    Cycle now{}, was{};
-    std::size_t c = 0;
-    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) now[c++] = index.at(mesh.point(v));
-    for (c = 0; c < 3; ++c) was[c] = before.polygons[f.idx()][c];
-    reversed[f.idx()] = canonical(now) != canonical(was);
+    const Polygon& was = before.polygons[f.idx()];
+    reversed[f.idx()] = canonical(corners(mesh, f, original)) != canonical(Cycle{was[0], was[1], was[2]});
   }
   return reversed;
 }
@@ -118,17 +133,17 @@ void orient_components(SurfaceMesh* mesh, const Soup& before) {
   }
 }
 
-TriangleMesh to_triangle_mesh(const SurfaceMesh& mesh) {
+// The oriented faces over the vertices of `before`: the vertices orient_polygon_soup split are
+// joined again. A file cannot keep two vertices at one position apart (every reader, fabform's
+// among them, joins them), so a split would promise a manifold surface that the written file
+// is not; its non-manifold edges stay, and are reported.
+TriangleMesh to_triangle_mesh(const SurfaceMesh& mesh, const Soup& before) {
   TriangleMesh out;
-  for (const auto v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    out.vertices.emplace_back(p.x(), p.y(), p.z());
-  }
+  for (const Point& p : before.points) out.vertices.emplace_back(p.x(), p.y(), p.z());
+  const std::vector<std::size_t> original = original_vertices(mesh, before);
   for (const Face f : mesh.faces()) {
-    std::array<int, 3> t{};
-    std::size_t c = 0;
-    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[c++] = static_cast<int>(v.idx());
-    out.triangles.push_back(t);
+    const Cycle c = corners(mesh, f, original);
+    out.triangles.push_back({static_cast<int>(c[0]), static_cast<int>(c[1]), static_cast<int>(c[2])});
   }
   return out;
 }
@@ -146,7 +161,6 @@ std::vector<std::string> RepairResult::changes() const {
   add(removed_degenerate, "degenerate (zero-area) triangles dropped");
   add(removed_duplicate, "duplicate triangles dropped (same vertices as another)");
   add(removed_isolated_vertices, "unused vertices dropped");
-  add(split_vertices, "vertices split at non-manifold or non-orientable spots");
   add(reversed_triangles, "triangles flipped to a consistent orientation, outward where closed");
   return lines;
 }
@@ -165,13 +179,12 @@ RepairResult repair_mesh(const TriangleMesh& mesh) {
 
   const Soup before_orientation = soup;
   PMP::orient_polygon_soup(soup.points, soup.polygons);
-  result.split_vertices = static_cast<int>(soup.points.size() - before_orientation.points.size());
   SurfaceMesh surface;
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, surface);
   orient_components(&surface, before_orientation);
   const std::vector<char> reversed = reversed_faces(surface, before_orientation);
   result.reversed_triangles = static_cast<int>(std::count(reversed.begin(), reversed.end(), 1));
-  result.mesh = to_triangle_mesh(surface);
+  result.mesh = to_triangle_mesh(surface, before_orientation);
   return result;
 }
 

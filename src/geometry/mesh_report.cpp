@@ -509,15 +509,17 @@ bool MeshReport::repairable() const {
           orientation == MeshOrientation::mixed);
 }
 
+std::string MeshReport::contact_refusal() const {
+  std::string why;
+  if (usable_for_contact(&why)) return "";
+  if (orientation == MeshOrientation::inward || orientation == MeshOrientation::mixed)
+    why += ": contact would take its outside for inside";
+  if (repairable()) why += "; fabform check MESH --repair OUT.obj fixes it";
+  return why;
+}
+
 std::vector<std::string> MeshReport::contact_warnings() const {
   std::vector<std::string> warnings;
-  std::string why;
-  if (!usable_for_contact(&why)) {
-    if (orientation == MeshOrientation::inward || orientation == MeshOrientation::mixed)
-      why += ": contact takes its outside for inside";
-    if (repairable()) why += "; fabform check MESH --repair OUT.obj fixes it";
-    warnings.push_back(why);
-  }
   if (self_intersecting_pairs > 0)
     warnings.push_back((self_intersections_complete ? "" : "at least ") + std::to_string(self_intersecting_pairs) +
                        " pairs of triangles cross each other (self-intersections): contact near them may be wrong");

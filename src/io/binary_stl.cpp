@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "fabform/error.hpp"
@@ -90,6 +92,13 @@ class CornerMerger {
   std::vector<Corner> positions_;
 };
 
+// An ASCII STL starts with "solid" (after white space) and is text: no NUL byte. A binary
+// header may start with "solid" too (SolidWorks writes it), but its count and floats hold NULs.
+bool looks_like_ascii(const std::string& head) {
+  const std::size_t first = head.find_first_not_of(" \t\r\n\f\v");
+  return first != std::string::npos && head.compare(first, 5, "solid") == 0 && head.find('\0') == std::string::npos;
+}
+
 Corner corner_at(const char* record, int corner) {
   Corner p{};
   std::memcpy(p.data(), record + 12 * (corner + 1), sizeof p);
@@ -98,15 +107,21 @@ Corner corner_at(const char* record, int corner) {
 
 }  // namespace
 
-bool is_binary_stl(const std::string& path) {
+std::optional<std::uintmax_t> binary_stl_trailing_bytes(const std::string& path) {
   std::error_code ec;
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size < kHeaderBytes) return false;
-  char header[kHeaderBytes];
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size < kHeaderBytes) return std::nullopt;
+  std::string head(kHeaderBytes + kFacetBytes, '\0');
   std::ifstream in(path, std::ios::binary);
-  if (!in.read(header, kHeaderBytes)) return false;
-  return size == kHeaderBytes + kFacetBytes * static_cast<std::uintmax_t>(declared_count(header));
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  const std::uintmax_t declared = kHeaderBytes + kFacetBytes * static_cast<std::uintmax_t>(declared_count(head.data()));
+  if (size < declared) return std::nullopt;
+  if (size > declared && looks_like_ascii(head)) return std::nullopt;
+  return size - declared;
 }
+
+bool is_binary_stl(const std::string& path) { return binary_stl_trailing_bytes(path).has_value(); }
 
 TriangleMesh read_binary_stl(const std::string& path) {
   const std::vector<char> bytes = read_all(path, std::filesystem::file_size(path));

@@ -7,6 +7,8 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,6 +17,7 @@
 #include "fabform/error.hpp"
 #include "io/binary_stl.hpp"
 #include "io/mesh_file_check.hpp"
+#include "io/obj_reader.hpp"
 #include "io/vrml_reader.hpp"
 #include "io/x3d_translation.hpp"
 
@@ -167,7 +170,7 @@ TriangleMesh read_with_assimp(const std::string& path, const std::optional<std::
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TEXCOORDS |
                                                           aiComponent_COLORS);
   // Read without post-processing first, to mend what assimp itself would then refuse.
-  const std::string extension = lower_extension(path);  // mended bytes come only from .ply and .obj
+  const std::string extension = lower_extension(path);  // mended bytes come only from .ply here
   const std::string hint = extension.empty() ? extension : extension.substr(1);
   const aiScene* read = mended ? importer.ReadFileFromMemory(mended->data(), mended->size(), 0, hint.c_str())
                                : importer.ReadFile(path, 0);
@@ -189,6 +192,38 @@ TriangleMesh read_with_assimp(const std::string& path, const std::optional<std::
   mesh = with_triangles(std::move(mesh), path, skipped);
   if (warnings)
     for (const std::string& line : skipped.lines()) warnings->push_back(line);
+  return mesh;
+}
+
+// OBJ by fabform's own reader (see obj_reader.hpp), from the mended text when there is one.
+TriangleMesh read_obj(const std::string& path, const std::optional<std::string>& mended,
+                      std::vector<std::string>* warnings) {
+  std::string text;
+  if (mended) {
+    text = *mended;
+  } else {
+    std::ifstream in(path, std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (!in) throw InputError({path, 0, ""}, "cannot read the file");
+  }
+  ObjMesh read = read_obj_text(text);
+  Skipped skipped;
+  skipped.points_and_lines = read.points_and_lines;
+  TriangleMesh mesh = with_triangles(std::move(read.mesh), path, skipped);
+  if (warnings)
+    for (const std::string& line : skipped.lines()) warnings->push_back(line);
+  return mesh;
+}
+
+// A binary STL by fabform's own reader; bytes after its declared triangles are left out, as
+// common readers do, and said.
+TriangleMesh read_stl(const std::string& path, std::uintmax_t trailing_bytes, std::vector<std::string>* warnings) {
+  TriangleMesh mesh = with_triangles(read_binary_stl(path), path, {});
+  const std::size_t triangles = mesh.triangles.size();
+  if (warnings && trailing_bytes > 0)
+    warnings->push_back("ignored " + std::to_string(trailing_bytes) + (trailing_bytes == 1 ? " byte" : " bytes") +
+                        " after the " + std::to_string(triangles) + (triangles == 1 ? " triangle" : " triangles") +
+                        " the binary STL declares");
   return mesh;
 }
 
@@ -214,8 +249,8 @@ TriangleMesh read_x3d(const std::string& path, std::vector<std::string>* warning
 
 TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnings) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError({path, 0, ""}, "no such mesh file");
+  if (std::filesystem::is_directory(path, ec)) throw InputError({path, 0, ""}, "is a folder, not a mesh file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError({path, 0, ""}, "no such mesh file");
   // assimp 5.2.5 has no VRML97 reader; Coin3D reads it (.wrz is gzip-compressed VRML97).
   const std::string extension = lower_extension(path);
   if (extension == ".wrl" || extension == ".wrz" || extension == ".vrml") return read_vrml(path, warnings);
@@ -229,7 +264,9 @@ TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnin
                      "X3D's classic and binary encodings are not read (X3D XML, .x3d, is): export the body "
                      "as .x3d, VRML97 (.wrl), STL or OBJ");
   const std::optional<std::string> mended = check_mesh_file(path);
-  if (extension == ".stl" && is_binary_stl(path)) return with_triangles(read_binary_stl(path), path, {});
+  if (extension == ".obj") return read_obj(path, mended, warnings);
+  if (extension == ".stl")
+    if (const auto trailing = binary_stl_trailing_bytes(path)) return read_stl(path, *trailing, warnings);
   return read_with_assimp(path, mended, warnings);
 }
 

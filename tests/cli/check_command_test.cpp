@@ -3,6 +3,7 @@
 // usage errors that write nothing.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 
 #include "fabform/io/obj_text.hpp"
@@ -24,6 +25,7 @@ class CheckCommand : public ::testing::Test {
     TriangleMesh inverted = test::cube({0, 0, 0}, 10.0);
     for (auto& t : inverted.triangles) test::flip(&t);
     dir.write("inverted.obj", obj_text(inverted));
+    std::filesystem::create_directories(dir.path("folder.stl"));
   }
   bool exists(const std::string& name) const { return std::filesystem::exists(dir.path(name)); }
   test::TempDir dir;
@@ -58,6 +60,34 @@ TEST_F(CheckCommand, RepairWritesAUsableMeshAndSaysWhatChanged) {
   EXPECT_NE(again.out.find("enclosed volume     1e-06 m^3"), std::string::npos) << again.out;
 }
 
+// A reader's warnings are part of the report: a binary STL with a byte after its triangles.
+TEST_F(CheckCommand, ReaderWarningsAreReported) {
+  std::string stl(84 + 50, '\0');
+  stl[80] = 1;  // one triangle
+  const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  std::memcpy(&stl[84 + 12], corners, sizeof corners);
+  dir.write("trailing.stl", stl + "\n");
+  const Outcome o = run_fabform(dir, "check trailing.stl");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("  warning: ignored 1 byte after the 1 triangle the binary STL declares\n"), std::string::npos) << o.out;
+}
+
+// What --repair promised is what the written file is, on a mesh whose repair has work to do:
+// a soup of the cube, one triangle flipped and one doubled, far from the origin at 17 digits.
+TEST_F(CheckCommand, TheRepairedFileReportsWhatTheRepairPromised) {
+  TriangleMesh mesh = test::soup(test::cube({1234.5678901234567, -0.1, 7.25}, 0.3));
+  test::flip(&mesh.triangles[3]);
+  mesh.triangles.push_back(mesh.triangles[5]);
+  dir.write("messy.obj", obj_text(mesh));
+  const Outcome o = run_fabform(dir, "check messy.obj --repair fixed.obj");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const std::string promised = o.out.substr(o.out.find("after repair:\n") + 14);
+  const Outcome again = run_fabform(dir, "check fixed.obj");
+  ASSERT_EQ(again.status, 0) << again.err;
+  const std::size_t from = again.out.find("  vertices"), to = again.out.find("verdict:");
+  EXPECT_EQ(promised.substr(0, promised.find("written:")), again.out.substr(from, to - from));
+}
+
 struct BadCheck {
   const char* name;
   const char* arguments;
@@ -77,6 +107,7 @@ TEST_P(CheckCommandBadInput, ExitsTwoWithOneLineAndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(
     Usage, CheckCommandBadInput,
     ::testing::Values(BadCheck{"MissingMesh", "check nowhere.stl --repair out.obj", "nowhere.stl: no such mesh file"},
+                      BadCheck{"Folder", "check folder.stl --repair out.obj", "folder.stl: is a folder, not a mesh file"},
                       BadCheck{"NoMesh", "check", "MESH"},
                       BadCheck{"UnknownUnit", "check inverted.obj --units furlong --repair out.obj", "furlong"},
                       BadCheck{"RepairNotObj", "check inverted.obj --repair out.stl", "OBJ"},

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 
 #include "fabform/io/obj_text.hpp"
@@ -80,17 +81,23 @@ TEST_F(RunCommand, SetOverridesAnySceneValue) {
   EXPECT_NE(slurp(dir.path("out/result.json")).find("\"nodes\": 49"), std::string::npos);
 }
 
-// A body with a triangle facing the wrong way, far below the fabric, still forms it; the run
-// warns, because contact near such a triangle takes outside for inside.
-TEST_F(RunCommand, BodyWithAFlippedTriangleIsWarnedAbout) {
+// A body with a triangle facing the wrong way is refused by run as check refuses it: one
+// verdict, in the same words, naming the mesh file (contact near such a triangle would take
+// outside for inside). Nothing is written.
+TEST_F(RunCommand, BodyWithAFlippedTriangleIsRefusedAsCheckRefusesIt) {
   TriangleMesh sphere = test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40);
   test::flip(&sphere.triangles.back());  // at the south pole
   dir.write("sphere.obj", obj_text(sphere));
-  const Outcome o = run_fabform(dir, "run scene.toml --out out");
-  ASSERT_EQ(o.status, 0) << o.err;
-  const std::string json = slurp(dir.path("out/result.json"));
-  EXPECT_NE(json.find("inconsistent orientation: 3 edges"), std::string::npos) << json;
-  EXPECT_NE(json.find("--repair"), std::string::npos) << json;
+  const Outcome run = run_fabform(dir, "run scene.toml --out out");
+  EXPECT_EQ(run.status, 2) << run.err;
+  const std::string refusal = run.err.substr(run.err.find("fabform: error: "));
+  EXPECT_EQ(line_count(refusal), 1) << run.err;
+  EXPECT_NE(refusal.find("sphere.obj: inconsistent orientation: 3 edges"), std::string::npos) << refusal;
+  EXPECT_NE(refusal.find("--repair"), std::string::npos) << refusal;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("out")));
+  const Outcome check = run_fabform(dir, "check sphere.obj");
+  EXPECT_EQ(check.status, 2);
+  EXPECT_EQ(check.err, "fabform: error: sphere.obj" + refusal.substr(refusal.find(": inconsistent")));
 }
 
 // Bad input: exit status 2, one line naming the file (and line), nothing written.

@@ -95,8 +95,10 @@ TEST(MeshReport, FlippedCubeIsInwardAndNotUsable) {
   EXPECT_FALSE(r.usable_for_contact(&why));
   EXPECT_NE(why.find("inward"), std::string::npos) << why;
   EXPECT_TRUE(r.repairable());
-  ASSERT_EQ(r.contact_warnings().size(), 1u);
-  EXPECT_NE(r.contact_warnings()[0].find("--repair"), std::string::npos);
+  EXPECT_NE(r.contact_refusal().find("point inward (closed mesh, negative enclosed volume): contact would take its outside for inside; "
+                                         "fabform check MESH --repair"),
+            std::string::npos) << r.contact_refusal();
+  EXPECT_TRUE(r.contact_warnings().empty());
 }
 
 TEST(MeshReport, CubeWithOneFlippedTriangleIsInconsistent) {
@@ -108,7 +110,8 @@ TEST(MeshReport, CubeWithOneFlippedTriangleIsInconsistent) {
   EXPECT_EQ(r.orientation, MeshOrientation::inconsistent);
   EXPECT_FALSE(r.usable_for_contact());
   EXPECT_TRUE(r.repairable());
-  EXPECT_FALSE(r.contact_warnings().empty());
+  EXPECT_EQ(r.contact_refusal(), "inconsistent orientation: 3 edges are shared by triangles facing opposite ways; "
+                                 "fabform check MESH --repair OUT.obj fixes it");
 }
 
 TEST(MeshReport, MoebiusBandIsNonOrientableAndNotRepairable) {
@@ -228,6 +231,7 @@ TEST(MeshReport, TwoCrossingTrianglesAreOneSelfIntersection) {
   EXPECT_EQ(r.touching_pairs, 0);
   EXPECT_TRUE(r.self_intersections_complete);
   EXPECT_TRUE(r.usable_for_contact()) << "a warning, not a reason to refuse";
+  EXPECT_EQ(r.contact_refusal(), "");
   ASSERT_EQ(r.contact_warnings().size(), 1u);
   EXPECT_NE(r.contact_warnings()[0].find("cross"), std::string::npos);
 }

@@ -9,6 +9,7 @@
 
 #include <assimp/Importer.hpp>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -102,13 +103,42 @@ TEST(BinaryStl, NonFiniteCoordinateNamesTheFileAndTriangle) {
   }
 }
 
-TEST(BinaryStl, OnlyExactSizesAreBinary) {
+// Bytes after the declared triangles (a trailing byte, a record cut short, a whole record) are
+// counted, not read, as common readers do; an ASCII STL is never taken for a binary one, nor a
+// binary file shorter than its count says.
+TEST(BinaryStl, TrailingBytesAreCountedNotRead) {
   test::TempDir dir;
-  const std::string path = dir.path("cube.stl");
-  write_binary_stl(path, corners_of(test::cube()));
-  std::ofstream(path, std::ios::binary | std::ios::app) << 'x';  // one byte too many
-  EXPECT_FALSE(is_binary_stl(path));
-  EXPECT_FALSE(is_binary_stl(dir.write("ascii.stl", "solid x\nendsolid x\n")));
+  const std::string exact = dir.path("cube.stl");
+  write_binary_stl(exact, corners_of(test::cube()));
+  EXPECT_EQ(binary_stl_trailing_bytes(exact), 0u);
+  for (const std::size_t extra : {1, 49, 50, 123}) {
+    const std::string path = dir.path("cube_" + std::to_string(extra) + ".stl");
+    write_binary_stl(path, corners_of(test::cube()));
+    std::ofstream(path, std::ios::binary | std::ios::app) << std::string(extra, 'x');
+    EXPECT_EQ(binary_stl_trailing_bytes(path), extra);
+    EXPECT_TRUE(is_binary_stl(path));
+    const TriangleMesh mesh = read_binary_stl(path);
+    EXPECT_EQ(mesh.triangles.size(), 12u);
+    EXPECT_EQ(mesh.vertices.size(), 8u);
+  }
+  // SolidWorks starts a binary header with "solid": its count and floats hold NUL bytes.
+  std::string solid_header = "solid part";
+  solid_header.resize(80, ' ');
+  const std::string named = dir.path("named.stl");
+  write_binary_stl(named, corners_of(test::cube()));
+  {
+    std::fstream file(named, std::ios::binary | std::ios::in | std::ios::out);
+    file.write(solid_header.data(), 80);
+  }
+  std::ofstream(named, std::ios::binary | std::ios::app) << '\n';
+  EXPECT_EQ(binary_stl_trailing_bytes(named), 1u);
+  const std::string ascii = "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid x\n";
+  EXPECT_FALSE(binary_stl_trailing_bytes(dir.write("ascii.stl", ascii)));
+  EXPECT_FALSE(is_binary_stl(dir.write("short_ascii.stl", "solid x\nendsolid x\n")));
+  const std::string cut = dir.path("cut.stl");
+  write_binary_stl(cut, corners_of(test::cube()));
+  std::filesystem::resize_file(cut, 84 + 50 * 12 - 1);
+  EXPECT_FALSE(is_binary_stl(cut));
   EXPECT_FALSE(is_binary_stl(dir.path("missing.stl")));
 }
 

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cctype>
+#include <cstdio>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -164,7 +167,58 @@ TEST_F(MeshReaderFiles, MissingFile) { expect_input_error((dir_ / "nothing_here.
 
 TEST_F(MeshReaderFiles, DirectoryIsNotAMesh) {
   fs::create_directories(dir_ / "folder.obj");
-  expect_input_error((dir_ / "folder.obj").string());
+  const std::string path = (dir_ / "folder.obj").string();
+  expect_input_error(path);
+  try {
+    read_mesh(path);
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), path + ": is a folder, not a mesh file");
+  }
+}
+
+// OBJ is read in double: 17 significant digits (what fabform check --repair writes) come back
+// bit for bit, where assimp's float would move them and merge neighbours.
+TEST_F(MeshReaderFiles, ObjCoordinatesAreReadExactly) {
+  const Eigen::Vector3d a(1234.5678901234567, -0.036491513252258301, 1e-300), b(1234.5678901234568, 0.1, 0.3),
+      c(0.12345678901234567, 123456.78901234567, -7.5);
+  char text[400];
+  std::snprintf(text, sizeof text, "v %.17g %.17g %.17g\nv %.17g %.17g %.17g\nv %.17g %.17g %.17g\nf 1 2 3\n", a.x(), a.y(),
+                a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z());
+  const TriangleMesh mesh = read_mesh(write("exact.obj", text));
+  ASSERT_EQ(mesh.vertices.size(), 3u);
+  EXPECT_EQ(mesh.vertices[0], a);
+  EXPECT_EQ(mesh.vertices[1], b);  // one double step from a's x: apart, not merged
+  EXPECT_EQ(mesh.vertices[2], c);
+}
+
+// An L-shaped hexagon listed from the corner next to its reflex one, as Rhino writes n-gons,
+// with texture and normal indices: its triangles cover the L (area 3), not its hull.
+TEST_F(MeshReaderFiles, ObjConcaveFaceIsTriangulatedInsideIt) {
+  const std::string path = write("l.obj",
+                                 "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nvt 0 0\nvn 0 0 1\n"
+                                 "f 3/1/1 4/1/1 5/1/1 6/1/1 1/1/1 2/1/1\n");
+  const TriangleMesh mesh = read_mesh(path);
+  ASSERT_EQ(mesh.triangles.size(), 4u);
+  double area = 0.0;
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3d n = (mesh.vertices[static_cast<std::size_t>(t[1])] - mesh.vertices[static_cast<std::size_t>(t[0])])
+                                  .cross(mesh.vertices[static_cast<std::size_t>(t[2])] - mesh.vertices[static_cast<std::size_t>(t[0])]);
+    EXPECT_GT(n.z(), 0.0);
+    area += 0.5 * n.z();
+  }
+  EXPECT_DOUBLE_EQ(area, 3.0);
+}
+
+TEST_F(MeshReaderFiles, BinaryStlTrailingBytesAreAWarning) {
+  std::string stl(84 + 50, '\0');
+  stl[80] = 1;  // one triangle
+  const float corners[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  std::memcpy(&stl[84 + 12], corners, sizeof corners);
+  std::vector<std::string> warnings;
+  const TriangleMesh mesh = read_mesh(write("one.stl", stl + "x"), &warnings);
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "ignored 1 byte after the 1 triangle the binary STL declares");
 }
 
 TEST_F(MeshReaderFiles, EmptyFiles) {

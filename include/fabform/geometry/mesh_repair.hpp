@@ -1,7 +1,9 @@
 #pragma once
 // Cleans a triangle mesh from CAD so that contact can use it: merges vertices at the same
 // position, drops degenerate and duplicate triangles and unused vertices, and orients the
-// triangles consistently (outward where the mesh is closed). Coordinates are not moved.
+// triangles consistently (outward where the mesh is closed). Coordinates are not moved, and no
+// vertex is split: what a file cannot hold (two vertices at one position) is never made, so the
+// written mesh reads back as repaired. Non-manifold edges and a non-orientable surface stay.
 #include <string>
 #include <vector>
 
@@ -16,7 +18,6 @@ struct RepairResult {
   int removed_duplicate = 0;        // triangles with the same vertex set as another, dropped
   int removed_isolated_vertices = 0;
   int reversed_triangles = 0;       // triangles now walked the other way round than in the input
-  int split_vertices = 0;           // vertices duplicated to undo non-manifold or non-orientable spots
 
   bool changed() const;
   /// One line per change ("merged 24 duplicate vertices"), empty when nothing changed.

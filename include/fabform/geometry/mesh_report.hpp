@@ -70,8 +70,11 @@ struct MeshReport {
   bool usable_for_contact(std::string* why = nullptr) const;
   /// Whether `repair_mesh` can fix what `usable_for_contact` rejects.
   bool repairable() const;
-  /// What matters for contact, one line each: inverted or inconsistent orientation,
-  /// self-intersections. Never that the mesh is open.
+  /// The one verdict `fabform check` and `fabform run` both give on a mesh contact cannot use
+  /// as it is: why, and that `fabform check --repair` fixes it when it does ("" when usable).
+  std::string contact_refusal() const;
+  /// What a usable mesh should still be warned about, one line each: self-intersections. Never
+  /// that the mesh is open.
   std::vector<std::string> contact_warnings() const;
 };
 
