@@ -1,24 +1,15 @@
 #include "io/obj_reader.hpp"
 
-#include <array>
 #include <cstdlib>
-#include <functional>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "fabform/geometry/polygon_triangulation.hpp"
 #include "io/text_lines.hpp"
+#include "io/vertex_welder.hpp"
 
 namespace fabform {
 namespace {
-
-struct PositionHash {
-  std::size_t operator()(const std::array<double, 3>& p) const {
-    std::size_t h = 0;
-    for (const double x : p) h = h * 1000003u ^ std::hash<double>{}(x);
-    return h;
-  }
-};
 
 class ObjBuilder {
  public:
@@ -36,11 +27,13 @@ class ObjBuilder {
     std::vector<int> index;
     std::vector<Eigen::Vector3d> points;
     for (std::size_t c = 1; c <= corners; ++c) {
-      const std::size_t position = position_of(line.words[c]);
-      index.push_back(vertex_at(position));
-      points.push_back(positions_[position]);
+      const Eigen::Vector3d& p = positions_[position_of(line.words[c])];
+      index.push_back(welder_.index_of(p));
+      points.push_back(p);
     }
-    for (const auto& t : triangulate_polygon(points)) out_.mesh.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+    for (const auto& t : triangulate_polygon(points))
+      out_.mesh.triangles.push_back({index[static_cast<std::size_t>(t[0])], index[static_cast<std::size_t>(t[1])],
+                                     index[static_cast<std::size_t>(t[2])]});
   }
 
   // As assimp counts them: a line of n corners is n - 1 segments, a point record of n corners n points.
@@ -58,19 +51,9 @@ class ObjBuilder {
     return static_cast<std::size_t>(i > 0 ? i - 1 : static_cast<long long>(positions_.size()) + i);
   }
 
-  // One vertex per position, as assimp's JoinIdenticalVertices makes it: contact needs the
-  // topology. + 0.0 turns -0 into +0, which compares equal but would hash apart.
-  int vertex_at(std::size_t position) {
-    const Eigen::Vector3d& p = positions_[position];
-    const std::array<double, 3> key{p.x() + 0.0, p.y() + 0.0, p.z() + 0.0};
-    const auto [it, inserted] = vertex_of_.emplace(key, static_cast<int>(out_.mesh.vertices.size()));
-    if (inserted) out_.mesh.vertices.push_back(p);
-    return it->second;
-  }
-
   std::vector<Eigen::Vector3d> positions_;
-  std::unordered_map<std::array<double, 3>, int, PositionHash> vertex_of_;
   ObjMesh out_;
+  VertexWelder welder_{&out_.mesh.vertices};  // only corners of faces become vertices
 };
 
 }  // namespace

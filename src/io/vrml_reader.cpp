@@ -37,9 +37,9 @@
 #include <mutex>
 #include <regex>
 #include <set>
-#include <unordered_map>
 
 #include "fabform/error.hpp"
+#include "io/vertex_welder.hpp"
 
 namespace fabform {
 namespace {
@@ -468,14 +468,6 @@ struct SceneReader {
 
 // ---- Traversal ------------------------------------------------------------------------------
 
-struct PointHash {
-  std::size_t operator()(const std::array<double, 3>& p) const {
-    std::size_t h = 0;
-    for (const double x : p) h = h * 1000003u ^ std::hash<double>{}(x);
-    return h;
-  }
-};
-
 enum class Kind { kSurface, kText, kLinesOrPoints, kOther };
 
 Kind kind_of(const SoNode* node) {
@@ -514,7 +506,7 @@ bool two_sided(const SoNode* node) {
 
 struct Traversal {
   TriangleMesh mesh;
-  std::unordered_map<std::array<double, 3>, int, PointHash> vertex_of;
+  VertexWelder welder{&mesh.vertices};
 
   // The geometry node whose triangles are coming, with its model matrix and orientation.
   const SoNode* current = nullptr;
@@ -534,11 +526,7 @@ struct Traversal {
       if (error.empty()) error = "a transformed point is not finite";
       return 0;
     }
-    // + 0.0 turns -0 into +0, which compares equal but would hash apart.
-    const std::array<double, 3> key{p.x() + 0.0, p.y() + 0.0, p.z() + 0.0};
-    const auto [it, inserted] = vertex_of.emplace(key, static_cast<int>(mesh.vertices.size()));
-    if (inserted) mesh.vertices.push_back(p);
-    return it->second;
+    return welder.index_of(p);
   }
 };
 
