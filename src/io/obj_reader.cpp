@@ -11,12 +11,26 @@
 namespace fabform {
 namespace {
 
+Eigen::Vector3d position(const Line& line) {
+  return {std::strtod(line.words[1].c_str(), nullptr), std::strtod(line.words[2].c_str(), nullptr),
+          std::strtod(line.words[3].c_str(), nullptr)};
+}
+
+// Every v record of the text: a face may name a vertex listed after it (check_mesh_file checks
+// positive indices against all the file's vertices, as assimp resolves them).
+std::vector<Eigen::Vector3d> positions_of(const std::string& text) {
+  std::vector<Eigen::Vector3d> positions;
+  Line line;
+  for (TextLines lines(text, 0, 1, true); lines.next(&line);)
+    if (line.words[0] == "v") positions.push_back(position(line));
+  return positions;
+}
+
 class ObjBuilder {
  public:
-  void vertex(const Line& line) {
-    positions_.emplace_back(std::strtod(line.words[1].c_str(), nullptr), std::strtod(line.words[2].c_str(), nullptr),
-                            std::strtod(line.words[3].c_str(), nullptr));
-  }
+  explicit ObjBuilder(std::vector<Eigen::Vector3d> positions) : positions_(std::move(positions)) {}
+
+  void vertex() { ++read_; }
 
   void face(const Line& line) {
     const std::size_t corners = line.words.size() - 1;
@@ -48,10 +62,11 @@ class ObjBuilder {
   // "v", "v/t", "v//n" or "v/t/n", from 1, or back from the last vertex read when negative.
   std::size_t position_of(const std::string& corner) const {
     const long long i = std::strtoll(corner.c_str(), nullptr, 10);
-    return static_cast<std::size_t>(i > 0 ? i - 1 : static_cast<long long>(positions_.size()) + i);
+    return static_cast<std::size_t>(i > 0 ? i - 1 : static_cast<long long>(read_) + i);
   }
 
-  std::vector<Eigen::Vector3d> positions_;
+  const std::vector<Eigen::Vector3d> positions_;
+  std::size_t read_ = 0;  // v records before the current line
   ObjMesh out_;
   VertexWelder welder_{&out_.mesh.vertices};  // only corners of faces become vertices
 };
@@ -59,11 +74,11 @@ class ObjBuilder {
 }  // namespace
 
 ObjMesh read_obj_text(const std::string& text) {
-  ObjBuilder builder;
+  ObjBuilder builder(positions_of(text));
   Line line;
   for (TextLines lines(text, 0, 1, true); lines.next(&line);) {
     const std::string& keyword = line.words[0];
-    if (keyword == "v") builder.vertex(line);
+    if (keyword == "v") builder.vertex();
     else if (keyword == "f") builder.face(line);
     else if (keyword == "l" || keyword == "p") builder.lines_or_points(line);
   }

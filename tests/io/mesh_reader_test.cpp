@@ -209,6 +209,16 @@ TEST_F(MeshReaderFiles, ObjConcaveFaceIsTriangulatedInsideIt) {
   EXPECT_DOUBLE_EQ(area, 3.0);
 }
 
+// A face may name vertices listed after it (positive indices), or count back from the last
+// vertex read so far (negative ones), as assimp and most readers allow.
+TEST_F(MeshReaderFiles, ObjIndicesReachForwardAndBack) {
+  const TriangleMesh mesh = read_mesh(write("order.obj", "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -1 -2\nv 5 5 5\n"));
+  ASSERT_EQ(mesh.triangles.size(), 2u);
+  EXPECT_EQ(mesh.vertices.size(), 3u) << "the fifth-line vertex is used by no face";
+  EXPECT_EQ(mesh.triangles[0], (std::array<int, 3>{0, 1, 2}));
+  EXPECT_EQ(mesh.triangles[1], (std::array<int, 3>{0, 2, 1}));
+}
+
 TEST_F(MeshReaderFiles, BinaryStlTrailingBytesAreAWarning) {
   std::string stl(84 + 50, '\0');
   stl[80] = 1;  // one triangle
