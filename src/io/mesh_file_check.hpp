@@ -1,10 +1,11 @@
 #pragma once
-// What a mesh file must be before assimp reads it. assimp 5.2.5 trusts what it reads: a count or
-// an index from the file goes straight into an allocation or a face, a misspelt number is read
-// as part of one, text in another encoding reads as an empty mesh. So the file is walked first:
-// declared counts (binary STL, PLY, OFF) against the file's size and data, every index against
-// the vertices, every coordinate for a finite number, ASCII STL facets for their keywords and
-// three vertices, text for NUL bytes and byte order marks. Internal to the mesh reader.
+// What a mesh file must be before assimp (or, for OBJ, fabform's own reader) reads it. assimp
+// 5.2.5 trusts what it reads: a count or an index from the file goes straight into an
+// allocation or a face, a misspelt number is read as part of one, text in another encoding
+// reads as an empty mesh. So the file is walked first: declared counts (binary STL, PLY, OFF)
+// against the file's size and data, every index against the vertices, every coordinate for a
+// finite number, ASCII STL facets for their keywords and three vertices, text for NUL bytes and
+// byte order marks. Internal to the mesh reader.
 #include <optional>
 #include <string>
 
