@@ -2,7 +2,6 @@
 
 #include <Eigen/Geometry>
 #include <cstddef>
-#include <numeric>
 
 namespace fabform {
 namespace {
@@ -33,54 +32,85 @@ bool inside_or_on(const Point2& p, const Point2& a, const Point2& b, const Point
   return cross(a, b, p) >= 0.0 && cross(b, c, p) >= 0.0 && cross(c, a, p) >= 0.0;
 }
 
+// Ear clipping over a ring of corners linked both ways. Only reflex corners can lie inside an
+// ear, so only they are tested: a convex polygon is cut in linear time.
 class EarClipper {
  public:
-  explicit EarClipper(std::vector<Point2> points) : points_(std::move(points)), ring_(points_.size()) {
-    std::iota(ring_.begin(), ring_.end(), 0);
+  explicit EarClipper(std::vector<Point2> points)
+      : points_(std::move(points)), prev_(points_.size()), next_(points_.size()), reflex_(points_.size()) {
+    const std::size_t n = points_.size();
+    for (std::size_t i = 0; i < n; ++i) prev_[i] = (i + n - 1) % n, next_[i] = (i + 1) % n;
+    for (std::size_t i = 0; i < n; ++i) mark_if_reflex(i);
   }
 
   std::vector<std::array<int, 3>> run() {
     std::vector<std::array<int, 3>> triangles;
-    while (ring_.size() > 3) {
-      const std::size_t i = next_ear();
-      triangles.push_back({corner(i + ring_.size() - 1), corner(i), corner(i + 1)});
-      ring_.erase(ring_.begin() + static_cast<std::ptrdiff_t>(i));
+    std::size_t i = 0, remaining = points_.size(), tried = 0;
+    while (remaining > 3) {
+      if (is_ear(i) || tried == remaining) {  // after a lap without an ear, the least bad corner
+        if (tried == remaining) i = leftmost_turn(i);
+        triangles.push_back(triangle(i));
+        i = clip(i);
+        --remaining, tried = 0;
+      } else {
+        i = next_[i], ++tried;
+      }
     }
-    triangles.push_back({corner(0), corner(1), corner(2)});
+    triangles.push_back(triangle(i));
     return triangles;
   }
 
  private:
-  int corner(std::size_t i) const { return ring_[i % ring_.size()]; }
-  const Point2& at(std::size_t i) const { return points_[static_cast<std::size_t>(corner(i))]; }
-  double turn(std::size_t i) const { return cross(at(i + ring_.size() - 1), at(i), at(i + 1)); }
+  double turn(std::size_t i) const { return cross(points_[prev_[i]], points_[i], points_[next_[i]]); }
+  std::array<int, 3> triangle(std::size_t i) const {
+    return {static_cast<int>(prev_[i]), static_cast<int>(i), static_cast<int>(next_[i])};
+  }
 
-  // An ear: a convex corner whose triangle holds no other corner of the ring (corners at the
+  void mark_if_reflex(std::size_t i) {
+    reflex_[i] = !(turn(i) > 0.0);
+    if (reflex_[i]) reflex_list_.push_back(i);  // may repeat; stale entries are skipped
+  }
+
+  // An ear: a convex corner whose triangle holds no reflex corner of the ring (corners at the
   // same place as one of its own do not block it: a repeated point is no obstacle).
   bool is_ear(std::size_t i) const {
-    if (!(turn(i) > 0.0)) return false;
-    const Point2 &a = at(i + ring_.size() - 1), &b = at(i), &c = at(i + 1);
-    for (std::size_t k = 0; k < ring_.size(); ++k) {
-      const Point2& p = at(k);
+    if (reflex_[i]) return false;
+    const Point2 &a = points_[prev_[i]], &b = points_[i], &c = points_[next_[i]];
+    for (const std::size_t k : reflex_list_) {
+      if (!reflex_[k] || clipped(k)) continue;
+      const Point2& p = points_[k];
       if (p == a || p == b || p == c) continue;
-      if (turn(k) <= 0.0 && inside_or_on(p, a, b, c)) return false;  // only reflex corners can be inside
+      if (inside_or_on(p, a, b, c)) return false;
     }
     return true;
   }
 
-  // The first ear; when there is none (what is left has no area, or crosses itself), the corner
-  // that turns most to the left, so that clipping always ends.
-  std::size_t next_ear() const {
-    std::size_t best = 0;
-    for (std::size_t i = 0; i < ring_.size(); ++i) {
-      if (is_ear(i)) return i;
-      if (turn(i) > turn(best)) best = i;
+  bool clipped(std::size_t k) const { return next_[prev_[k]] != k; }
+
+  // Unlinks corner i; its neighbours turn anew. Returns the next corner.
+  std::size_t clip(std::size_t i) {
+    const std::size_t a = prev_[i], c = next_[i];
+    next_[a] = c, prev_[c] = a;
+    for (const std::size_t k : {a, c}) {
+      const bool was = reflex_[k];
+      reflex_[k] = !(turn(k) > 0.0);
+      if (reflex_[k] && !was) reflex_list_.push_back(k);
     }
+    return c;
+  }
+
+  // The corner of the ring that turns most to the left, starting from i.
+  std::size_t leftmost_turn(std::size_t i) const {
+    std::size_t best = i;
+    for (std::size_t k = next_[i]; k != i; k = next_[k])
+      if (turn(k) > turn(best)) best = k;
     return best;
   }
 
   std::vector<Point2> points_;
-  std::vector<int> ring_;
+  std::vector<std::size_t> prev_, next_;
+  std::vector<char> reflex_;
+  std::vector<std::size_t> reflex_list_;
 };
 
 }  // namespace
