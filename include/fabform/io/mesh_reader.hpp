@@ -8,9 +8,10 @@
 
 namespace fabform {
 
-/// Throws InputError naming the file when it cannot be read or holds no triangle. When
-/// warnings is not null, what was skipped or is doubtful (VRML: shapes without geometry, text,
-/// two-sided faces) is appended to it, one line each.
+/// Throws InputError naming the file (and the line, in text) when it is missing, a folder,
+/// cannot be read or holds no triangle. When warnings is not null, what was skipped or is
+/// doubtful (points and lines; VRML: shapes without geometry, text, two-sided faces; binary
+/// STL: bytes after its triangles) is appended to it, one line each.
 TriangleMesh read_mesh(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace fabform
