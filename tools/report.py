@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The report of a run, for engineers: RUN_DIR/report.html with the summary, the strain maps
 (the formed fabric over the bodies, coloured by warp and by weft strain, with a colour bar),
-the area-weighted strain histogram, the convergence plot, for a run in load steps each step's
+the forming maps (shear angle, thickness ratio and wrinkle risk per cell, the draw-in round the
+blank's edge, the contact pressure on the bodies in Pa and mmHg), the area-weighted strain histogram, the convergence plot, for a run in load steps each step's
 figures (a table, and strain and draw-in against the tool's travel), what was modelled, the
 warnings and the inputs with their SHA-256. It opens in a browser from the folder, without a
 server.
@@ -11,8 +12,9 @@ matplotlib (Agg), the fabric from fabric.obj and fabric.vtk, the bodies from bod
 A run that did not converge says so at the top of the report and in its plot's title.
 
 Usage: /usr/bin/python3 tools/report.py RUN_DIR
-Writes into RUN_DIR: report.html, strain_warp.png, strain_weft.png, strain_histogram.png,
-convergence.png and convergence.svg (and steps.png for a run in load steps), each under a
+Writes into RUN_DIR: report.html, strain_warp.png, strain_weft.png, shear_angle.png,
+thickness_ratio.png, wrinkle_risk.png, draw_in.png, contact_pressure.png (with bodies),
+strain_histogram.png, convergence.png and convergence.svg (and steps.png for a run in load steps), each under a
 temporary name first, then renamed.
 Exits 2 with one line naming the file when an input is missing or malformed.
 """
@@ -50,14 +52,14 @@ def read_obj(path: pathlib.Path) -> tuple:
 
 
 def read_vtk_fields(path: pathlib.Path) -> dict:
-    """The POINT_DATA scalars of fabric.vtk, by name."""
+    """The POINT_DATA and CELL_DATA scalars of a VTK file fabform wrote, by name."""
     if not path.is_file():
         raise pc.InputError(f"{path}: no such file")
     lines = path.read_text().splitlines()
     fields, at = {}, 0
     while at < len(lines):
         words = lines[at].split()
-        if words[:1] == ["POINT_DATA"]:
+        if words[:1] in (["POINT_DATA"], ["CELL_DATA"]):
             count = int(words[1])
         if words[:1] == ["SCALARS"]:
             try:
@@ -88,13 +90,27 @@ def triangles_near(vertices, faces, box) -> np.ndarray:
     return corners[near]
 
 
-def strain_map(run: pathlib.Path, fabric, strains, bodies, direction: str) -> pathlib.Path:
-    """The formed fabric over the bodies, coloured by strain, z-buffered (tools/raster.py)."""
-    plt = pc.pyplot()
-    from matplotlib import cm, colors
+def colour_bar(fig, ax, norm, cmap, label: str):
+    from matplotlib import cm
+    bar = fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.7)
+    bar.set_label(label)
+    return bar
 
+
+def finite_norm(values: np.ndarray):
+    from matplotlib import colors
+    finite = values[np.isfinite(values)]
+    lo, hi = (finite.min(), finite.max()) if finite.size else (0.0, 1.0)
+    return colors.Normalize(vmin=lo, vmax=max(hi, lo + 1e-9))
+
+
+def fabric_map(run: pathlib.Path, fabric, values, bodies, name: str, label: str, title: str,
+               per_cell: bool = False, cmap_name: str = "viridis") -> pathlib.Path:
+    """The formed fabric over the bodies, coloured by a field per node (interpolated) or per cell,
+    z-buffered (tools/raster.py)."""
+    plt = pc.pyplot()
     vertices, quads = np.asarray(fabric[0]), np.asarray(fabric[1])
-    values = np.asarray(strains, dtype=float)
+    values = np.asarray(values, dtype=float)
     split = np.concatenate([quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]])  # each cell as two triangles
     cloth = vertices[split]
     box = (vertices.min(axis=0), vertices.max(axis=0))
@@ -109,25 +125,101 @@ def strain_map(run: pathlib.Path, fabric, strains, bodies, direction: str) -> pa
     owner, weights = raster.rasterise(frame, every, nearer_by)
     light = view[2] + 0.5 * view[1] - 0.3 * view[0]
     shading = raster.lambert(every, light / np.linalg.norm(light))
-    finite = values[np.isfinite(values)]
-    lo, hi = (finite.min(), finite.max()) if finite.size else (0.0, 1.0)
-    norm = colors.Normalize(vmin=lo, vmax=max(hi, lo + 1e-9))
-    cmap = plt.get_cmap("viridis")
+    norm = finite_norm(values)
+    cmap = plt.get_cmap(cmap_name)
     image = np.ones(owner.shape + (3,))
     on_cloth = (owner >= 0) & (owner < len(cloth))
     t = owner[on_cloth]
-    value = np.sum(weights[on_cloth] * values[split[t]], axis=1)
+    value = values[t % len(quads)] if per_cell else np.sum(weights[on_cloth] * values[split[t]], axis=1)
     image[on_cloth] = cmap(norm(value))[:, :3] * shading[t, None]
     on_body = owner >= len(cloth)
     image[on_body] = 0.85 * shading[owner[on_body], None]
     fig, ax = plt.subplots(figsize=(7.6, 7.6 * frame.height / frame.width + 0.6))
     ax.imshow(image, interpolation="antialiased")
     ax.set_axis_off()
-    bar = fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.7)
-    bar.set_label(f"{direction} strain")
-    ax.set_title(f"{direction} strain of the formed fabric (grey: the bodies)", fontsize=10)
+    colour_bar(fig, ax, norm, cmap, label)
+    ax.set_title(f"{title} (grey: the bodies)", fontsize=10)
     fig.tight_layout()
-    path = save_figure(fig, run / f"strain_{direction}.png")
+    path = save_figure(fig, run / f"{name}.png")
+    plt.close(fig)
+    return path
+
+
+def strain_map(run: pathlib.Path, fabric, strains, bodies, direction: str) -> pathlib.Path:
+    return fabric_map(run, fabric, strains, bodies, f"strain_{direction}", f"{direction} strain",
+                      f"{direction} strain of the formed fabric")
+
+
+MMHG_PA = 133.322387415  # 1 mmHg in Pa (contact_pressure.hpp)
+
+
+def pressure_map(run: pathlib.Path, fabric, bodies, pressure) -> pathlib.Path:
+    """The bodies under the fabric, seen from the report's view without the fabric, coloured by
+    the contact pressure on each vertex (bodies.vtk), in Pa and mmHg."""
+    plt = pc.pyplot()
+    vertices, faces = np.asarray(bodies[0]), np.asarray([f[:3] for f in bodies[1]])
+    values = np.asarray(pressure, dtype=float)
+    cloth = np.asarray(fabric[0])
+    lo, hi = cloth.min(axis=0), cloth.max(axis=0)
+    grow = 0.5 * (hi - lo)
+    corners = vertices[faces]
+    near = np.all((corners.max(axis=1) >= lo - grow) & (corners.min(axis=1) <= hi + grow), axis=1)
+    faces, corners = faces[near], corners[near]
+    view = raster.camera(**VIEW)
+    frame = raster.Frame(corners.reshape(-1, 3), view, width=900)
+    owner, weights = raster.rasterise(frame, corners)
+    light = view[2] + 0.5 * view[1] - 0.3 * view[0]
+    shading = raster.lambert(corners, light / np.linalg.norm(light))
+    norm = finite_norm(values[np.unique(faces)] if faces.size else values)
+    cmap = plt.get_cmap("inferno")
+    image = np.ones(owner.shape + (3,))
+    seen = owner >= 0
+    t = owner[seen]
+    image[seen] = cmap(norm(np.sum(weights[seen] * values[faces[t]], axis=1)))[:, :3] * (0.4 + 0.6 * shading[t, None])
+    fig, ax = plt.subplots(figsize=(7.6, 7.6 * frame.height / frame.width + 0.6))
+    ax.imshow(image, interpolation="antialiased")
+    ax.set_axis_off()
+    bar = colour_bar(fig, ax, norm, cmap, "contact pressure (Pa)")
+    mmhg = bar.ax.secondary_yaxis("left", functions=(lambda p: p / MMHG_PA, lambda m: m * MMHG_PA))
+    mmhg.set_ylabel("mmHg")
+    ax.set_title("contact pressure of the fabric on the bodies (fabric hidden)", fontsize=10)
+    fig.tight_layout()
+    path = save_figure(fig, run / "contact_pressure.png")
+    plt.close(fig)
+    return path
+
+
+def edge_nodes(faces) -> list:
+    """The nodes on the fabric's edge: on a side only one face has."""
+    count = {}
+    for f in faces:
+        for a, b in zip(f, f[1:] + f[:1]):
+            key = (min(a, b), max(a, b))
+            count[key] = count.get(key, 0) + 1
+    return sorted({i for key, n in count.items() if n == 1 for i in key})
+
+
+def draw_in_map(run: pathlib.Path, fabric, blank, draw_in) -> pathlib.Path:
+    """Seen from above: the flat blank's outline, its edge nodes coloured by how far they drew
+    in (mm), and the formed fabric's outline."""
+    plt = pc.pyplot()
+    flat, formed = np.asarray(blank[0]), np.asarray(fabric[0])
+    edge = edge_nodes(fabric[1])
+    values = 1000.0 * np.asarray(draw_in, dtype=float)[edge]
+    norm = finite_norm(values)
+    cmap = plt.get_cmap("coolwarm")
+    fig, ax = plt.subplots(figsize=(7.0, 6.2))
+    ax.scatter(1000.0 * formed[edge, 0], 1000.0 * formed[edge, 1], s=4, c="0.6", label="formed edge (top view)")
+    ax.scatter(1000.0 * flat[edge, 0], 1000.0 * flat[edge, 1], s=18, c=values, cmap=cmap, norm=norm,
+               label="flat blank's edge")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+    ax.legend(loc="upper right", fontsize=8)
+    colour_bar(fig, ax, norm, cmap, "draw-in (mm, inwards)")
+    ax.set_title("draw-in round the blank's edge", fontsize=10)
+    fig.tight_layout()
+    path = save_figure(fig, run / "draw_in.png")
     plt.close(fig)
     return path
 
@@ -234,6 +326,18 @@ def summary_rows(result: dict) -> list:
         rows.append(("on a body", f"{f['sliding_nodes']} nodes sliding, {f['stuck_nodes']} stuck"))
     if "load_steps" in result:
         rows.append(("load steps", f"{len(result.get('steps', []))} of {result['load_steps']} finished"))
+    if f.get("shear_angle_max_deg") is not None:
+        rows.append(("largest shear angle", f"{number(f['shear_angle_max_deg'], 3)}° (locking angle "
+                                            f"{number(f['locking_angle_deg'], 3)}°, from the {f['locking_angle_from']})"))
+    if f.get("thickness_ratio_min") is not None:
+        rows.append(("smallest thickness ratio", f"{number(f['thickness_ratio_min'], 3)} of the flat fabric's"))
+    if "wrinkle_cells" in f:
+        rows.append(("cells at risk of wrinkling", f"{f['wrinkle_cells']} (sheared past locking or compressed both ways)"))
+    if f.get("contact_pressure_max_Pa") is not None:
+        rows.append(("contact pressure", f"largest {number(f['contact_pressure_max_Pa'], 4)} Pa "
+                                         f"({number(f['contact_pressure_max_mmHg'], 3)} mmHg), mean "
+                                         f"{number(f['contact_pressure_mean_Pa'], 4)} Pa "
+                                         f"({number(f['contact_pressure_mean_mmHg'], 3)} mmHg)"))
     for direction in ("warp", "weft"):
         if f"max_{direction}_strain" in f:
             rows.append((f"largest {direction} strain", peak_text(f[f"max_{direction}_strain"])))
@@ -325,6 +429,23 @@ def make_report(run: pathlib.Path) -> pathlib.Path:
             raise pc.InputError(f"{run / 'fabric.vtk'}: no field {name}")
         strain_map(run, fabric, fields[name], bodies, direction)
         pictures.append((f"{name}.png", f"{direction} strain over the bodies"))
+    for name, label, title, cmap in (
+            ("shear_angle_deg", "shear angle (°)", "shear angle per cell", "viridis"),
+            ("thickness_ratio", "thickness ratio h/h₀ (1: as flat)", "thickness ratio per cell", "viridis"),
+            ("wrinkle_risk", "wrinkle risk (1: locked or compressed both ways)", "wrinkle risk per cell", "Reds")):
+        if name not in fields:
+            raise pc.InputError(f"{run / 'fabric.vtk'}: no field {name}")
+        stem = name.removesuffix("_deg")
+        fabric_map(run, fabric, fields[name], bodies, stem, label, title, per_cell=True, cmap_name=cmap)
+        pictures.append((f"{stem}.png", title))
+    draw_in_map(run, fabric, read_obj(run / "blank.obj"), fields["draw_in_m"])
+    pictures.append(("draw_in.png", "draw-in round the blank's edge"))
+    if bodies:
+        pressure = read_vtk_fields(run / "bodies.vtk")
+        if "contact_pressure_Pa" not in pressure:
+            raise pc.InputError(f"{run / 'bodies.vtk'}: no field contact_pressure_Pa")
+        pressure_map(run, fabric, bodies, pressure["contact_pressure_Pa"])
+        pictures.append(("contact_pressure.png", "contact pressure on the bodies (Pa and mmHg)"))
     if result["figures"]["strain_histogram"]["strain_edges"]:
         histogram_picture(run, result["figures"]["strain_histogram"])
         pictures.append(("strain_histogram.png", "fabric area by strain"))

@@ -16,5 +16,6 @@ constexpr int kExitInterruptedBase = 128;
 int run_command(const std::vector<std::string>& args);
 int check_command(const std::vector<std::string>& args);
 int study_command(const std::vector<std::string>& args);
+int predistort_command(const std::vector<std::string>& args);
 
 }  // namespace fabform::cli

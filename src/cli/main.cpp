@@ -14,6 +14,7 @@ const char* kUsage =
     "                    [--partition P] [--time-limit MIN] [--mem-mb M] [--quiet]\n"
     "       fabform study --resume DIR [--jobs J] [--on local|slurm] ...\n"
     "       fabform check MESH [--units m|cm|mm|in] [--repair OUT.obj]\n"
+    "       fabform predistort RESULT_DIR IMAGE.png OUT.png\n"
     "       fabform solvers\n"
     "       fabform --version\n";
 
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   if (args[0] == "run") return fabform::cli::run_command(rest);
   if (args[0] == "check") return fabform::cli::check_command(rest);
   if (args[0] == "study") return fabform::cli::study_command(rest);
+  if (args[0] == "predistort") return fabform::cli::predistort_command(rest);
   if (args[0] == "solvers" && rest.empty()) {
     for (const auto& name : fabform::solver_names()) std::printf("%s\n", name.c_str());
     return fabform::cli::kExitDone;

@@ -9,28 +9,12 @@
 namespace fabform {
 namespace {
 
-// A face of the fabric as formed: its area and the mean strain of its warp sides and of its
-// weft sides (NaN where it has none of a kind, as some of an arc mesh's faces).
-struct Cell {
-  double area_m2;
-  double warp_strain;
-  double weft_strain;
-};
-
-int spring_between(const Fabric& fabric, int p, int q) {
-  for (const int s : fabric.springs_at(p)) {
-    const Spring& spring = fabric.springs()[static_cast<std::size_t>(s)];
-    if ((spring.a == q || spring.b == q) && spring.kind <= SpringKind::weft) return s;
-  }
-  return -1;
-}
-
-Cell formed_cell(const Model& model, const Face& face, const std::vector<Eigen::Vector3d>& x) {
+FormedCell formed_cell(const Model& model, const Face& face, const std::vector<Eigen::Vector3d>& x) {
   const Fabric& fabric = model.fabric;
   double sum[2] = {0.0, 0.0};
   int count[2] = {0, 0};
   for (int c = 0; c < face.corners; ++c) {
-    const int s = spring_between(fabric, face.corner[static_cast<std::size_t>(c)],
+    const int s = stretch_spring_between(fabric, face.corner[static_cast<std::size_t>(c)],
                                  face.corner[static_cast<std::size_t>((c + 1) % face.corners)]);
     if (s < 0) continue;
     const Spring& spring = fabric.springs()[static_cast<std::size_t>(s)];
@@ -41,13 +25,6 @@ Cell formed_cell(const Model& model, const Face& face, const std::vector<Eigen::
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   return {face_area(face, x), count[0] ? sum[0] / count[0] : nan, count[1] ? sum[1] / count[1] : nan};
-}
-
-std::vector<Cell> formed_cells(const Model& model, const std::vector<Eigen::Vector3d>& x) {
-  std::vector<Cell> cells;
-  cells.reserve(model.fabric.faces().size());
-  for (const Face& face : model.fabric.faces()) cells.push_back(formed_cell(model, face, x));
-  return cells;
 }
 
 // The most stretched (sign +1) or most compressed (sign −1) spring of a kind.
@@ -78,11 +55,11 @@ BinWidth bin_width(double lo, double hi) {
       if (span * per / step <= 20.0) return {step, per};
 }
 
-StrainHistogram histogram_of(const std::vector<Cell>& cells) {
+StrainHistogram histogram_of(const std::vector<FormedCell>& cells) {
   StrainHistogram h;
   if (cells.empty()) return h;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const Cell& c : cells)
+  for (const FormedCell& c : cells)
     for (const double strain : {c.warp_strain, c.weft_strain})
       if (!std::isnan(strain)) lo = std::min(lo, strain), hi = std::max(hi, strain);
   if (!std::isfinite(lo) || !std::isfinite(hi)) return h;  // a broken state has no histogram
@@ -96,7 +73,7 @@ StrainHistogram histogram_of(const std::vector<Cell>& cells) {
     const double at = std::floor(strain / width.value() - first);
     return std::min(bins - 1, static_cast<std::size_t>(std::max(0.0, at)));
   };
-  for (const Cell& c : cells) {
+  for (const FormedCell& c : cells) {
     if (!std::isnan(c.warp_strain)) h.warp_area_m2[bin_of(c.warp_strain)] += c.area_m2;
     if (!std::isnan(c.weft_strain)) h.weft_area_m2[bin_of(c.weft_strain)] += c.area_m2;
   }
@@ -104,7 +81,7 @@ StrainHistogram histogram_of(const std::vector<Cell>& cells) {
 }
 
 // Each face's area split equally among its corners; the corners on a body add up.
-double contact_area(const Fabric& fabric, const std::vector<Cell>& cells,
+double contact_area(const Fabric& fabric, const std::vector<FormedCell>& cells,
                     const std::vector<unsigned char>& contact) {
   double area = 0.0;
   for (std::size_t f = 0; f < cells.size(); ++f) {
@@ -118,12 +95,27 @@ double contact_area(const Fabric& fabric, const std::vector<Cell>& cells,
 
 }  // namespace
 
+int stretch_spring_between(const Fabric& fabric, int p, int q) {
+  for (const int s : fabric.springs_at(p)) {
+    const Spring& spring = fabric.springs()[static_cast<std::size_t>(s)];
+    if ((spring.a == q || spring.b == q) && spring.kind <= SpringKind::weft) return s;
+  }
+  return -1;
+}
+
+std::vector<FormedCell> formed_cells(const Model& model, const std::vector<Eigen::Vector3d>& x) {
+  std::vector<FormedCell> cells;
+  cells.reserve(model.fabric.faces().size());
+  for (const Face& face : model.fabric.faces()) cells.push_back(formed_cell(model, face, x));
+  return cells;
+}
+
 FabricFigures fabric_figures(const Model& model, const std::vector<Eigen::Vector3d>& x,
                              const std::vector<unsigned char>& contact) {
-  const std::vector<Cell> cells = formed_cells(model, x);
+  const std::vector<FormedCell> cells = formed_cells(model, x);
   FabricFigures f;
   f.area_flat_m2 = model.fabric.flat_area();
-  for (const Cell& c : cells) f.area_formed_m2 += c.area_m2;
+  for (const FormedCell& c : cells) f.area_formed_m2 += c.area_m2;
   f.contact_area_m2 = contact_area(model.fabric, cells, contact);
   f.max_warp = peak_of(model, x, SpringKind::warp, 1.0);
   f.max_weft = peak_of(model, x, SpringKind::weft, 1.0);

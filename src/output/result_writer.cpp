@@ -8,7 +8,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fabform/analysis/cell_deformation.hpp"
+#include "fabform/analysis/contact_pressure.hpp"
 #include "fabform/analysis/drape_figures.hpp"
+#include "fabform/analysis/locking_angle.hpp"
+#include "fabform/analysis/print_map.hpp"
 #include "fabform/error.hpp"
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/spring_strains.hpp"
@@ -16,6 +20,8 @@
 #include "fabform/output/draw_in.hpp"
 #include "fabform/output/fabric_figures.hpp"
 #include "fabform/io/obj_text.hpp"
+#include "fabform/io/png_image.hpp"
+#include "fabform/output/print_map_files.hpp"
 #include "fabform/output/results_folder.hpp"
 
 namespace fabform {
@@ -27,6 +33,8 @@ namespace fs = std::filesystem;
 nlohmann::json number(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
+
+nlohmann::json vector_json(const Eigen::Vector3d& v) { return {number(v.x()), number(v.y()), number(v.z())}; }
 
 nlohmann::json peak_json(const StrainPeak& p) {
   return {{"strain", number(p.strain)},
@@ -82,6 +90,49 @@ nlohmann::json drape_json(const RunRecord& run) {
   }
 }
 
+// The locking angle a cell's shear is judged by: the shear table's when it has one (it
+// stiffens), else CellDeformationOptions' default.
+std::pair<CellDeformationOptions, const char*> deformation_options(const Model& model) {
+  CellDeformationOptions options;
+  if (model.shear)
+    if (const std::optional<double> locking = locking_angle_deg(*model.shear); locking && *locking > 0.0 && *locking < 90.0) {
+      options.locking_angle_deg = *locking;
+      return {options, "shear table"};
+    }
+  return {options, "default"};
+}
+
+CellDeformation deformation_of(const RunRecord& run) {
+  return cell_deformation(run.model, run.state.x, deformation_options(run.model).first);
+}
+
+// What a forming engineer reads: shear, thinning, wrinkle risk and the pressure on the bodies.
+void forming_figures(const RunRecord& run, nlohmann::json& figures) {
+  const CellDeformation d = deformation_of(run);
+  const auto [options, locking_from] = deformation_options(run.model);
+  const auto face_centre = [&](int f) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    const Face& face = run.model.fabric.faces()[static_cast<std::size_t>(f)];
+    for (int c = 0; c < face.corners; ++c) sum += run.state.x[static_cast<std::size_t>(face.corner[static_cast<std::size_t>(c)])];
+    return vector_json(sum / face.corners);
+  };
+  figures["shear_angle_max_deg"] = d.shear_angle_max_face < 0 ? nlohmann::json(nullptr) : number(d.shear_angle_max_deg);
+  figures["shear_angle_max_at_m"] = d.shear_angle_max_face < 0 ? nlohmann::json(nullptr) : face_centre(d.shear_angle_max_face);
+  figures["thickness_ratio_min"] = d.thickness_ratio_min_face < 0 ? nlohmann::json(nullptr) : number(d.thickness_ratio_min);
+  figures["thickness_ratio_min_at_m"] =
+      d.thickness_ratio_min_face < 0 ? nlohmann::json(nullptr) : face_centre(d.thickness_ratio_min_face);
+  figures["wrinkle_cells"] = d.wrinkle_cells;
+  figures["locking_angle_deg"] = options.locking_angle_deg;
+  figures["locking_angle_from"] = locking_from;
+  const ContactPressure p = contact_pressure(run.model, run.state.x, run.check.contact);
+  figures["contact_pressure_max_Pa"] = number(p.max_Pa);
+  figures["contact_pressure_max_mmHg"] = number(p.max_Pa / kPascalPerMmHg);
+  figures["contact_pressure_mean_Pa"] = number(p.mean_Pa);
+  figures["contact_pressure_mean_mmHg"] = number(p.mean_Pa / kPascalPerMmHg);
+  figures["contact_pressure_max_at_m"] =
+      p.max_node < 0 ? nlohmann::json(nullptr) : vector_json(run.state.x[static_cast<std::size_t>(p.max_node)]);
+}
+
 std::string result_json(const RunRecord& run) {
   const Summary& s = run.summary;
   nlohmann::json j;
@@ -125,6 +176,7 @@ std::string result_json(const RunRecord& run) {
   j["figures"]["deepest_spring_cut_m"] = run.check.spring_cuts.deepest_m;
   j["figures"]["sliding_nodes"] = run.check.sliding_nodes;
   j["figures"]["stuck_nodes"] = run.check.stuck_nodes;
+  forming_figures(run, j["figures"]);
   j["fabric"] = fabric_json(run.model.fabric);
   if (run.scene.drape.on) {
     j["drape"] = drape_json(run);
@@ -210,7 +262,16 @@ std::vector<PointField> fabric_fields(const RunRecord& run) {
           {"strain_weft", strains.weft},
           {"contact", std::vector<double>(run.check.contact.begin(), run.check.contact.end())},
           {"residual_N", run.check.residual_N},
-          {"draw_in_m", draw_in(run.model, run.state.x).per_node_m}};
+          {"draw_in_m", draw_in(run.model, run.state.x).per_node_m},
+          {"contact_pressure_Pa", contact_pressure(run.model, run.state.x, run.check.contact).node_Pa}};
+}
+
+// What each face of the formed fabric carries into ParaView.
+std::vector<PointField> fabric_cell_fields(const RunRecord& run) {
+  const CellDeformation d = deformation_of(run);
+  return {{"shear_angle_deg", d.shear_angle_deg},
+          {"thickness_ratio", d.thickness_ratio},
+          {"wrinkle_risk", std::vector<double>(d.wrinkle_risk.begin(), d.wrinkle_risk.end())}};
 }
 
 std::string fabric_vtk(const RunRecord& run) {
@@ -231,7 +292,48 @@ std::string fabric_vtk(const RunRecord& run) {
   }
   out << "POINT_DATA " << x.size() << '\n';
   for (const auto& [name, values] : fabric_fields(run)) vtk_field(out, name, values);
+  out << "CELL_DATA " << faces.size() << '\n';
+  for (const auto& [name, values] : fabric_cell_fields(run)) vtk_field(out, name, values);
   return out.str();
+}
+
+// The bodies where the run left them (bodies.obj's vertices, in its order), with the pressure
+// the fabric puts on each vertex.
+std::string bodies_vtk(const RunRecord& run) {
+  const TriangleMesh all = posed_bodies(run.model);
+  std::vector<double> pressure;
+  for (const std::vector<double>& body : contact_pressure(run.model, run.state.x, run.check.contact).body_vertex_Pa)
+    pressure.insert(pressure.end(), body.begin(), body.end());
+  std::ostringstream out;
+  out.precision(12);
+  out << "# vtk DataFile Version 3.0\nfabform " << run.scene.name << " bodies\nASCII\n"
+      << "DATASET POLYDATA\nPOINTS " << all.vertices.size() << " double\n";
+  for (const auto& p : all.vertices) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  out << "POLYGONS " << all.triangles.size() << ' ' << 4 * all.triangles.size() << '\n';
+  for (const auto& t : all.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  out << "POINT_DATA " << all.vertices.size() << '\n';
+  vtk_field(out, "contact_pressure_Pa", pressure);
+  return out.str();
+}
+
+// The flat blank where the scene lays it: the fabric's rest positions from the scene's origin.
+std::vector<Eigen::Vector3d> flat_blank(const RunRecord& run) {
+  std::vector<Eigen::Vector3d> flat;
+  for (int k = 0; k < run.model.node_count(); ++k) flat.push_back(run.scene.origin_m + run.model.fabric.rest_position(k));
+  return flat;
+}
+
+// The flat-formed map's files (print_map_files.hpp), for a state without NaN or infinity.
+void add_print_map_files(const RunRecord& run, std::vector<ResultFile>& files) {
+  for (const auto& p : run.state.x)
+    if (!p.allFinite()) return;
+  const std::vector<Eigen::Vector3d> flat = flat_blank(run);
+  const PrintMap map = print_map(run.model.fabric, flat, run.state.x);
+  files.emplace_back("formed.obj", formed_obj(map, run.state.x));
+  files.emplace_back("formed.mtl", map_mtl("formed"));
+  files.emplace_back("blank.obj", blank_obj(map, flat));
+  files.emplace_back("blank.mtl", map_mtl("blank"));
+  files.emplace_back("uv_grid.png", png_bytes(checkerboard(512, 512, 16)));
 }
 
 // VTK's XML polygon data, ASCII: what a ParaView collection (.pvd) plays as a series. A value
@@ -293,8 +395,6 @@ std::string steps_pvd(const std::vector<StepResult>& steps) {
   return out.str();
 }
 
-nlohmann::json vector_json(const Eigen::Vector3d& v) { return {number(v.x()), number(v.y()), number(v.z())}; }
-
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::string& content) {
@@ -325,8 +425,11 @@ void write_results(const std::string& dir, const RunRecord& run) {
   const Termination t = run.summary.termination;
   if (t != Termination::converged && t != Termination::numerical_failure)
     files.emplace_back("checkpoint.bin", checkpoint_bytes(run.state, run.summary));
-  if (t != Termination::running && !run.model.bodies.empty())  // checkpoints stay light
+  if (t != Termination::running && !run.model.bodies.empty()) {  // checkpoints stay light
     files.emplace_back("bodies.obj", bodies_obj(run));
+    files.emplace_back("bodies.vtk", bodies_vtk(run));
+  }
+  if (t != Termination::running) add_print_map_files(run, files);
   if (in_steps && run.steps) {
     for (const StepResult& step : *run.steps) {
       files.emplace_back(step_file("fabric", step.step), step.fabric_vtp);

@@ -21,7 +21,10 @@ std::vector<std::string> result_figure_paths(const Scene& scene) {
       "residual_relative", "wall_seconds", "solve_seconds", "threads", "nodes", "contact_nodes",
       "max_penetration_m", "figures.area_flat_m2", "figures.area_formed_m2", "figures.contact_area_m2",
       "figures.draw_in_max_m", "figures.springs_cutting_bodies", "figures.springs_over_edges",
-      "figures.deepest_spring_cut_m", "figures.sliding_nodes", "figures.stuck_nodes", "fabric.nodes", "fabric.faces",
+      "figures.deepest_spring_cut_m", "figures.sliding_nodes", "figures.stuck_nodes", "figures.shear_angle_max_deg",
+      "figures.thickness_ratio_min", "figures.wrinkle_cells", "figures.locking_angle_deg", "figures.contact_pressure_max_Pa",
+      "figures.contact_pressure_max_mmHg", "figures.contact_pressure_mean_Pa", "figures.contact_pressure_mean_mmHg",
+      "fabric.nodes", "fabric.faces",
       "fabric.springs.warp", "fabric.springs.weft", "fabric.springs.shear", "fabric.springs.bend"};
   for (const char* peak : kPeaks) {
     paths.emplace_back(peak);

@@ -25,7 +25,9 @@ import raster  # noqa: E402
 
 FABFORM = os.environ.get("FABFORM_BINARY", str(ROOT / "build" / "fabform"))
 REPORT = [sys.executable, str(ROOT / "tools" / "report.py")]
-PICTURES = 4  # two strain maps, the histogram, the convergence plot
+# two strain maps, shear angle, thickness ratio, wrinkle risk, draw-in, contact pressure, the
+# histogram, the convergence plot
+PICTURES = 9
 
 
 def fabform_run(out: pathlib.Path, *extra: str) -> int:
@@ -62,12 +64,14 @@ class Report(unittest.TestCase):
         shutil.rmtree(cls.folder, ignore_errors=True)
 
     def test_every_picture_and_the_summary_are_written(self):
-        for name in ("report.html", "strain_warp.png", "strain_weft.png", "strain_histogram.png",
+        for name in ("report.html", "strain_warp.png", "strain_weft.png", "shear_angle.png", "thickness_ratio.png",
+                     "wrinkle_risk.png", "draw_in.png", "contact_pressure.png", "strain_histogram.png",
                      "convergence.png", "convergence.svg"):
             self.assertTrue((self.converged / name).is_file(), name)
         page = (self.converged / "report.html").read_text()
         for label in ("termination", "largest warp strain", "largest weft strain", "fabric area",
-                      "contact", "What was modelled", "Warnings", "SHA-256"):
+                      "contact", "largest shear angle", "smallest thickness ratio", "cells at risk of wrinkling",
+                      "contact pressure", "mmHg", "What was modelled", "Warnings", "SHA-256"):
             self.assertIn(label, page)
         self.assertNotIn('class="alarm"', page)
         self.assertEqual(page.count("<img "), PICTURES)
@@ -78,6 +82,8 @@ class Report(unittest.TestCase):
         peak = result["figures"]["max_warp_strain"]
         self.assertIn(f"{peak['strain'] * 100:.3g} %", page)
         self.assertIn(f"{result['figures']['contact_area_m2'] * 1e4:.4g} cm²", page)
+        self.assertIn(f"{result['figures']['shear_angle_max_deg']:.3g}°", page)
+        self.assertIn(f"{result['figures']['contact_pressure_max_Pa']:.4g} Pa", page)
 
     def test_a_run_that_did_not_converge_says_so_plainly(self):
         page = (self.capped / "report.html").read_text()

@@ -38,6 +38,20 @@ struct FabricFigures {
   StrainHistogram histogram;
 };
 
+/// A face of the fabric as formed: its area and the mean strain of its warp sides and of its
+/// weft sides (NaN where it has none of a kind, as some of an arc mesh's faces).
+struct FormedCell {
+  double area_m2;
+  double warp_strain;
+  double weft_strain;
+};
+
+/// The warp or weft spring joining nodes p and q (an index into springs()), or -1.
+int stretch_spring_between(const Fabric& fabric, int p, int q);
+
+/// Every face of the fabric at `x`, in the order of fabric.faces().
+std::vector<FormedCell> formed_cells(const Model& model, const std::vector<Eigen::Vector3d>& x);
+
 /// The figures of the fabric at `x`; `contact` flags the nodes resting on a body (one per node).
 FabricFigures fabric_figures(const Model& model, const std::vector<Eigen::Vector3d>& x,
                              const std::vector<unsigned char>& contact);

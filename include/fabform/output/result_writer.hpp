@@ -1,9 +1,11 @@
 #pragma once
 // Writes a run's results into a folder: result.json (the summary other tools read, with the
 // inputs that made it), convergence.csv (the history), fabric.obj (the formed fabric),
-// fabric.vtk (ParaView, with per-node warp and weft strain, contact flag, residual and draw-in),
-// bodies.obj (the bodies where the run left them, in metres; not in checkpoints) and
-// checkpoint.bin (the state to resume from) unless the run converged or broke. A run in load
+// fabric.vtk (ParaView, with per-node warp and weft strain, contact flag, residual, draw-in and
+// contact pressure, and per-cell shear angle, thickness ratio and wrinkle risk), bodies.obj and
+// bodies.vtk (the bodies where the run left them, in metres, the latter with the contact
+// pressure on each vertex; not in checkpoints), the flat-formed map (print_map_files.hpp; not in
+// checkpoints) and checkpoint.bin (the state to resume from) unless the run converged or broke. A run in load
 // steps adds each finished step: fabric_step_K.vtp and bodies_step_K.vtp (VTK XML), the
 // series fabric_steps.pvd that ParaView plays, and the step's figures under result.json's "steps". The folder is
 // replaced at once (results_folder.hpp), so it never holds a half-written or mixed set.

@@ -1,0 +1,42 @@
+// fabform predistort RESULT_DIR IMAGE OUT: the image to print on the flat blank so that the part
+// formed in RESULT_DIR shows IMAGE, a design drawn in the part's developed view
+// (print_map.hpp). Reads RESULT_DIR/blank.obj, the flat-formed map every run writes. Exit 0
+// with OUT written; 2 with one line naming the file when the map or the image cannot be read or
+// OUT cannot be written, OUT then untouched.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "fabform/analysis/print_map.hpp"
+#include "fabform/error.hpp"
+#include "fabform/io/png_image.hpp"
+#include "fabform/output/print_map_files.hpp"
+#include "fabform/output/result_writer.hpp"
+
+namespace fabform::cli {
+namespace {
+
+int predistort_files(const std::vector<std::string>& args) {
+  if (args.size() != 3 || (!args.empty() && args[0].rfind('-', 0) == 0))
+    throw InputError({"command line", 0, ""}, "usage: fabform predistort RESULT_DIR IMAGE OUT.png");
+  const PrintMap map = read_blank_obj((std::filesystem::path(args[0]) / "blank.obj").string());
+  const Image print = predistort(map, read_png(args[1]));
+  write_file_atomically(args[2], png_bytes(print));
+  std::printf("wrote %s (%d x %d pixels, the blank's frame)\n", args[2].c_str(), print.width, print.height);
+  return kExitDone;
+}
+
+}  // namespace
+
+int predistort_command(const std::vector<std::string>& args) {
+  try {
+    return predistort_files(args);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "fabform: error: %s\n", error.what());
+    return kExitBadInput;
+  }
+}
+
+}  // namespace fabform::cli
