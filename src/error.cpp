@@ -1,5 +1,7 @@
 #include "fabform/error.hpp"
 
+#include <cstring>
+
 namespace fabform {
 
 std::string format_located(const SourceLocation& where, const std::string& message) {
@@ -17,5 +19,10 @@ InputError::InputError(SourceLocation where, const std::string& message)
     : std::runtime_error(format_located(where, message)),
       where_(std::move(where)),
       message_(message) {}
+
+SystemError::SystemError(const std::string& subject, const std::string& doing, const std::string& reason)
+    : std::runtime_error(subject + ": cannot " + doing + " (" + reason + ")") {}
+
+std::string system_reason(int errnum) { return std::strerror(errnum); }
 
 }  // namespace fabform

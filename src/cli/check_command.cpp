@@ -7,13 +7,14 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/guarded.hpp"
 #include "fabform/error.hpp"
 #include "fabform/geometry/mesh_repair.hpp"
 #include "fabform/geometry/mesh_report.hpp"
 #include "fabform/geometry/placement.hpp"
 #include "fabform/io/mesh_reader.hpp"
 #include "fabform/io/obj_text.hpp"
-#include "fabform/output/result_writer.hpp"
+#include "fabform/output/atomic_file.hpp"
 
 namespace fabform::cli {
 namespace {
@@ -174,12 +175,7 @@ int check(const CheckArguments& args) {
 }  // namespace
 
 int check_command(const std::vector<std::string>& args) {
-  try {
-    return check(parse_arguments(args));
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "fabform: error: %s\n", error.what());
-    return kExitBadInput;
-  }
+  return guarded([&] { return check(parse_arguments(args)); });
 }
 
 }  // namespace fabform::cli

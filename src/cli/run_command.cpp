@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "cli/commands.hpp"
+#include "cli/guarded.hpp"
 #include "cli/interrupt_handlers.hpp"
 #include "fabform/error.hpp"
 #include "fabform/geometry/mesh_report.hpp"
@@ -218,7 +219,13 @@ int run(const RunArguments& args) {
   if (!args.quiet) progress.finish();
   explain_ending(&summary, monitor, dir);
   const bool broke = summary.termination == Termination::numerical_failure && monitor.last_good_iteration() >= 0;
-  publish(broke ? monitor.last_good_state() : state, summary);
+  try {
+    publish(broke ? monitor.last_good_state() : state, summary);
+  } catch (const SystemError& error) {
+    std::fprintf(stderr, "fabform: error: %s; %s keeps what it held (the last checkpoint written, if any)\n",
+                 error.what(), dir.c_str());
+    return kExitSystemRefused;
+  }
   std::fprintf(stderr, "fabform: %s: %s\nfabform: results in %s\n", to_string(summary.termination).c_str(),
                summary.message.c_str(), dir.c_str());
   return exit_status(summary.termination);
@@ -227,15 +234,7 @@ int run(const RunArguments& args) {
 }  // namespace
 
 int run_command(const std::vector<std::string>& args) {
-  try {
-    return run(parse_arguments(args));
-  } catch (const InputError& error) {
-    std::fprintf(stderr, "fabform: error: %s\n", error.what());
-    return kExitBadInput;
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "fabform: error: %s\n", error.what());
-    return kExitBadInput;
-  }
+  return guarded([&] { return run(parse_arguments(args)); });
 }
 
 }  // namespace fabform::cli

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "cli/commands.hpp"
+#include "cli/guarded.hpp"
 #include "cli/interrupt_handlers.hpp"
 #include "fabform/error.hpp"
 #include "fabform/solver/interrupt.hpp"
@@ -152,12 +153,7 @@ int study(const StudyArguments& args) {
 }  // namespace
 
 int study_command(const std::vector<std::string>& args) {
-  try {
-    return study(parse_arguments(args));
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "fabform: error: %s\n", error.what());
-    return kExitBadInput;
-  }
+  return guarded([&] { return study(parse_arguments(args)); });
 }
 
 }  // namespace fabform::cli

@@ -108,6 +108,7 @@ class TableParser {
       fail("strain must increase strictly: " + cells.first + " follows " +
            std::to_string(points_.back().strain));
     if (points_.size() >= kMaxPoints) fail("more than 100000 points");
+    if (!points_.empty() && *value < points_.back().tension_N_per_m && falling_line_ == 0) falling_line_ = line_;
     points_.push_back({*strain, *value});
     if (points_.size() == 1) first_point_line_ = line_;
   }
@@ -122,7 +123,7 @@ class TableParser {
     if (is_stress_)
       for (auto& point : points_) point.tension_N_per_m *= *thickness_m_;
     try {
-      return {TensionTable(points_, source_), areal_density_kg_m2_, areal_density_line_};
+      return {TensionTable(points_, source_), areal_density_kg_m2_, areal_density_line_, falling_line_};
     } catch (const std::invalid_argument& error) {
       fail(error.what(), first_point_line_);
     }
@@ -134,6 +135,7 @@ class TableParser {
   int thickness_line_ = 0;
   int areal_density_line_ = 0;
   int first_point_line_ = 0;
+  int falling_line_ = 0;
   bool header_seen_ = false;
   bool is_stress_ = false;
   std::optional<double> thickness_m_;

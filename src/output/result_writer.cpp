@@ -397,25 +397,6 @@ std::string steps_pvd(const std::vector<StepResult>& steps) {
 
 }  // namespace
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << content;
-    out.flush();
-    if (!out) {
-      std::remove(temporary.c_str());
-      throw std::runtime_error(path + ": cannot write");
-    }
-  }
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot write (" + ec.message() + ")");
-  }
-}
-
 void write_results(const std::string& dir, const RunRecord& run) {
   const bool in_steps = run.model.load_steps() > 0;
   std::vector<ResultFile> files = {{"convergence.csv", convergence_csv(run.summary, in_steps)},

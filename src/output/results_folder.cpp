@@ -2,14 +2,12 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <stdexcept>
 
 #include <fcntl.h>
 
 #include "fabform/error.hpp"
+#include "fabform/output/atomic_file.hpp"
 
 namespace fabform {
 namespace {
@@ -32,14 +30,9 @@ bool is_results_folder(const fs::path& dir) {
   return fs::is_empty(dir, ec) || fs::is_regular_file(dir / "result.json", ec);
 }
 
-void write_file(const fs::path& path, const std::string& content) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << content;
-  out.flush();
-  if (!out) throw std::runtime_error(path.string() + ": cannot write");
+[[noreturn]] void cannot_replace(const fs::path& dir, const std::error_code& ec) {
+  throw SystemError(dir.string(), "replace the results", ec.message());
 }
-
-std::string errno_text() { return std::strerror(errno); }
 
 // Puts `staged` where `dir` is and the old folder where `staged` was.
 void swap_in(const fs::path& staged, const fs::path& dir) {
@@ -49,13 +42,53 @@ void swap_in(const fs::path& staged, const fs::path& dir) {
   std::error_code ec;
   fs::remove_all(old, ec);
   fs::rename(dir, old, ec);
-  if (ec) throw std::runtime_error(dir.string() + ": cannot replace the results (" + ec.message() + ")");
+  if (ec) cannot_replace(dir, ec);
   fs::rename(staged, dir, ec);
   if (ec) {
     fs::rename(old, dir);
-    throw std::runtime_error(dir.string() + ": cannot replace the results (" + ec.message() + ")");
+    cannot_replace(dir, ec);
   }
   fs::rename(old, staged, ec);  // removed by the caller with the staging folder
+}
+
+// Fills a fresh staging folder beside `dir` with `files`.
+fs::path stage(const fs::path& dir, const char* role, const std::vector<ResultFile>& files) {
+  const fs::path staged = sibling(dir, role);
+  std::error_code ec;
+  fs::remove_all(staged, ec);  // left by a run that was killed while writing
+  if (!fs::create_directories(staged, ec))
+    throw SystemError(staged.string(), "create a folder", ec ? ec.message() : "it exists");
+  try {
+    for (const auto& [name, content] : files) write_file((staged / name).string(), content);
+  } catch (...) {
+    fs::remove_all(staged, ec);
+    throw;
+  }
+  return staged;
+}
+
+// Puts the staged folder in place of `dir`, whether `dir` exists or not.
+void put_in_place(const fs::path& staged, const fs::path& dir) {
+  if (fs::exists(dir)) return swap_in(staged, dir);
+  if (std::rename(staged.c_str(), dir.c_str()) != 0) throw SystemError(dir.string(), "create", system_reason(errno));
+}
+
+// What a publish will do, done once with a small file and undone: a folder fabform cannot
+// create, fill or rename into place (a full or read-only disk, a mount point) fails here, before
+// the solve, not after it.
+void probe(const fs::path& dir) {
+  const fs::path staged = stage(dir, "probe", {{"probe", "fabform checks it can write here\n"}});
+  std::error_code ec;
+  try {
+    const bool existed = fs::exists(dir);
+    put_in_place(staged, dir);
+    if (existed) swap_in(staged, dir);  // the second exchange gives the earlier results back
+    else fs::rename(dir, staged, ec);
+  } catch (...) {
+    fs::remove_all(staged, ec);
+    throw;
+  }
+  fs::remove_all(staged, ec);
 }
 
 }  // namespace
@@ -69,26 +102,19 @@ void check_results_folder(const std::string& dir_text) {
     throw InputError({dir_text, 0, ""}, "holds files that are not fabform results (no result.json); "
                                         "choose another output folder");
   if (!dir.parent_path().empty()) fs::create_directories(dir.parent_path(), ec);
-  const fs::path probe = sibling(dir, "probe");
-  fs::remove_all(probe, ec);
-  if (!fs::create_directory(probe, ec))
-    throw InputError({dir_text, 0, ""}, "the output folder cannot be written (" +
-                                            (ec ? ec.message() : std::string("exists")) + ")");
-  fs::remove_all(probe, ec);
+  try {
+    probe(dir);
+  } catch (const SystemError& error) {
+    throw InputError({dir_text, 0, ""}, std::string("the output folder cannot take results: ") + error.what());
+  }
 }
 
 void publish_results(const std::string& dir_text, const std::vector<ResultFile>& files) {
   const fs::path dir = normalised(dir_text);
-  const fs::path staged = sibling(dir, "staging");
+  const fs::path staged = stage(dir, "staging", files);
   std::error_code ec;
-  fs::remove_all(staged, ec);  // left by a run that was killed while writing
-  if (!fs::create_directories(staged, ec))
-    throw std::runtime_error(staged.string() + ": cannot create (" + ec.message() + ")");
   try {
-    for (const auto& [name, content] : files) write_file(staged / name, content);
-    if (fs::exists(dir)) swap_in(staged, dir);
-    else if (std::rename(staged.c_str(), dir.c_str()) != 0)
-      throw std::runtime_error(dir.string() + ": cannot create (" + errno_text() + ")");
+    put_in_place(staged, dir);
   } catch (...) {
     fs::remove_all(staged, ec);
     throw;

@@ -1,7 +1,10 @@
 #include "fabform/output/run_monitor.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <utility>
+
+#include "fabform/error.hpp"
 
 namespace fabform {
 namespace {
@@ -45,7 +48,13 @@ void RunMonitor::checkpoint() {
   snapshot.residual_N = record.residual_N;
   snapshot.seconds = record.seconds;
   snapshot.message = stop_message(snapshot);
-  publish_(state_, snapshot);
+  // A checkpoint that cannot be written (a full disk) must not end the run: the last one written
+  // is kept, and the next is tried when it is due.
+  try {
+    publish_(state_, snapshot);
+  } catch (const SystemError& error) {
+    std::fprintf(stderr, "\nfabform: warning: checkpoint not written: %s; the last one written is kept\n", error.what());
+  }
   iterations_since_checkpoint_ = 0;
   last_checkpoint_time_ = Clock::now();
 }

@@ -14,6 +14,7 @@
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/pressure.hpp"
 #include "fabform/model/wind.hpp"
+#include "fabform/scene/memory_budget.hpp"
 
 namespace fabform {
 namespace {
@@ -35,9 +36,16 @@ bool within_range(const std::vector<Eigen::Vector3d>& points) {
   return true;
 }
 
-MaterialFile read_material(const std::string& path, const SourceLocation& where) {
+// A table whose force falls with strain makes the fabric unstable where it does (a spring that
+// softens snaps); most often it is a typing error, so the scene must say it is meant.
+MaterialFile read_material(const Scene& scene, const std::string& path, const SourceLocation& where) {
   require_file(path, where, "material table");
-  return read_material_file(path);
+  MaterialFile file = read_material_file(path);
+  if (file.falling_line > 0 && !scene.softening)
+    throw InputError({path, file.falling_line, ""},
+                     "the tension falls with strain here (below the point before); if the fabric is meant to soften, "
+                     "set softening = true under [fabric] in the scene");
+  return file;
 }
 
 // The fabric's mass per area, as its material files state it: one of them, or both alike.
@@ -178,7 +186,7 @@ void check_clear_start(const Scene& scene, const Model& model) {
 // the fabric has them, so the model has their term.
 void add_shear(const Scene& scene, Model* model) {
   if (!scene.shear.on) return;
-  model->shear = read_material(scene.shear.material_path, scene.shear.material_where).table;
+  model->shear = read_material(scene, scene.shear.material_path, scene.shear.material_where).table;
 }
 
 // Bending: hinges with the fabric's flexural rigidity, or seed 004's bend springs (the fabric
@@ -291,9 +299,10 @@ Scene with_tolerance_in_newtons(Scene scene, const Model& model) {
 }
 
 Model build_model(const Scene& scene) {
+  check_memory_budget(scene);
   Fabric fabric = build_fabric(scene);
-  const MaterialFile warp = read_material(scene.warp_path, scene.warp_where);
-  const MaterialFile weft = read_material(scene.weft_path, scene.weft_where);
+  const MaterialFile warp = read_material(scene, scene.warp_path, scene.warp_where);
+  const MaterialFile weft = read_material(scene, scene.weft_path, scene.weft_where);
   Model model{fabric, warp.table, weft.table, build_locks(scene, fabric), build_bodies(scene),
               build_start(scene, fabric)};
   model.paths = build_paths(scene, model.bodies);

@@ -140,12 +140,13 @@ void read_fabric(TableReader& r, Scene* scene) {
   scene->warp_where = r.locate_key("warp");
   scene->weft_path = resolve(scene->path, plain_text(r, "weft", "", true));
   scene->weft_where = r.locate_key("weft");
+  scene->softening = r.flag("softening", false);
   if (shape == "rectangle")
-    r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft"});
+    r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening"});
   else if (scene->fabric.mesh == FabricSpec::Mesh::arc)
-    r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft"});
+    r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft", "softening"});
   else
-    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft"});
+    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft", "softening"});
 }
 
 void read_shear(TableReader r, Scene* scene) {

@@ -81,6 +81,13 @@ class TableReader {
     return *value;
   }
 
+  bool flag(const std::string& key, bool fallback) {
+    const toml::node* n = take(key);
+    if (!n) return fallback;
+    if (!n->is_boolean()) fail(key, "must be true or false");
+    return *n->value<bool>();
+  }
+
   long long integer(const std::string& key, long long fallback, bool required = false) {
     const toml::node* n = take(key);
     if (!n) {

@@ -40,16 +40,17 @@ namespace {
 // CHOLMOD 3 runs small loops on a fixed team of 4 OpenMP threads (CHOLMOD_OMP_NUM_THREADS, fixed
 // when Debian built it) whatever the machine and the thread setting; on 2 cores their wake-ups
 // cost more than the loops (measured: 1e6 futex calls in a 10k-node dome). Those loops stay on
-// their caller when no parallel level is left for them: none on one thread, one (the split's
-// two sides) on more. Called from serial code only, as the setting is global.
+// their caller when no parallel level is left for them: none for a matrix factorised whole, one
+// (the split's two sides, on two threads) for a split one. Called from serial code only, as the
+// setting is global.
 template <class Work>
-void without_cholmod_team(Work&& work) {
+void without_cholmod_team(bool split, Work&& work) {
 #ifdef _OPENMP
   struct Levels {
     const int saved = omp_get_max_active_levels();
-    Levels() { omp_set_max_active_levels(omp_get_max_threads() > 1 ? 1 : 0); }
+    explicit Levels(int levels) { omp_set_max_active_levels(levels); }
     ~Levels() { omp_set_max_active_levels(saved); }
-  } allowed;
+  } allowed(split && omp_get_max_threads() > 1 ? 1 : 0);
 #endif
   work();
 }
@@ -67,13 +68,14 @@ bool SparseCholesky::factorize(Eigen::SparseMatrix<double> lower) {
   Impl& impl = *impl_;
   const bool analyse = !impl.same_pattern(lower);
   impl.take(lower, analyse);
-  bool definite = false;
-  without_cholmod_team([&] {
-    if (analyse) {
+  if (analyse)
+    without_cholmod_team(false, [&] {
       impl.split = SubstructuredCholesky::split(impl.matrix, impl.min_split_unknowns);
       if (!impl.split) impl.whole.analyse(impl.matrix);
       impl.analysed = true;
-    }
+    });
+  bool definite = false;
+  without_cholmod_team(impl.split != nullptr, [&] {
     definite = impl.split ? impl.split->factorize(impl.matrix) : impl.whole.factorize(impl.matrix);
   });
   return definite;
@@ -83,7 +85,7 @@ bool SparseCholesky::split() const { return impl_->split != nullptr; }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
   Eigen::VectorXd x = b;
-  without_cholmod_team([&] {
+  without_cholmod_team(impl_->split != nullptr, [&] {
     if (impl_->split) x = impl_->split->solve(b);
     else impl_->whole.solve(&x);
   });

@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fabform/error.hpp"
+
 namespace fabform {
 namespace {
 
@@ -45,7 +47,7 @@ int exit_status_of(int wait_status) {
 
 pid_t start_process(const std::vector<std::string>& argv, const std::string& log) {
   const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("cannot start " + argv[0] + ": fork failed");
+  if (pid < 0) throw SystemError(argv[0], "start", system_reason(errno));
   if (pid > 0) return pid;
   setpgid(0, 0);
   const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);

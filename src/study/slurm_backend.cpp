@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "fabform/error.hpp"
+#include "fabform/output/atomic_file.hpp"
 #include "fabform/solver/interrupt.hpp"
 #include "fabform/study/child_process.hpp"
 #include "fabform/study/study_case.hpp"
@@ -116,11 +117,11 @@ CaseEndings run_on_slurm(const StudySpec& spec, const std::string& dir, const st
   const fs::path folder = fs::path(dir) / "slurm";
   fs::create_directories(folder);
   const std::string script = (folder / "study.sbatch").string();
-  std::ofstream(script, std::ios::binary | std::ios::trunc) << slurm_script(spec, dir, todo, options, self_executable());
+  write_file_atomically(script, slurm_script(spec, dir, todo, options, self_executable()));
   const CommandOutput submitted = run_process({"sbatch", "--parsable", script});
   const std::string job = trimmed(submitted.out.substr(0, submitted.out.find(';')));
   if (submitted.status != 0 || job.empty())
-    throw std::runtime_error("sbatch refused the study: " + trimmed(submitted.err));
+    throw SystemError("sbatch", "queue the study", trimmed(submitted.err));
   std::ofstream(folder / "jobs.txt", std::ios::app) << job << '\n';
   std::fprintf(stderr, "fabform: study %s submitted to Slurm as job %s (%zu tasks)\n", spec.name.c_str(), job.c_str(),
                todo.size());

@@ -209,9 +209,17 @@ void check_study_against_scene(const StudySpec& spec) {
 StudySpec load_study(const std::string& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw InputError({path, 0, ""}, "no such study file");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw InputError({path, 0, ""}, "cannot be read");
+  return parse_study(text.str(), path);
+}
+
+StudySpec parse_study(std::string_view text, const std::string& path) {
   toml::table root;
   try {
-    root = toml::parse_file(path);
+    root = toml::parse(text, std::string_view(path));
   } catch (const toml::parse_error& error) {
     throw InputError({path, static_cast<int>(error.source().begin.line), ""}, std::string(error.description()));
   }

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fabform/study/atomic_file.hpp"
+#include "fabform/output/atomic_file.hpp"
 
 namespace fabform {
 namespace {

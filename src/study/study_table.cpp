@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fabform/study/atomic_file.hpp"
+#include "fabform/output/atomic_file.hpp"
 #include "fabform/study/result_figures.hpp"
 #include "fabform/study/study_case.hpp"
 

@@ -1,9 +1,10 @@
-// The command-line contract of DESIGN.md, exercised on the real binary: exit statuses, one-line
+// The command-line contract, exercised on the real binary: exit statuses, one-line
 // errors that name the file, and output folders that are complete or untouched.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "fabform/io/obj_text.hpp"
@@ -129,6 +130,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"BadTolerance", "run scene.toml --out out --tol fast", "", "", "solver.tolerance_N"},
         BadRun{"UnknownOption", "run scene.toml --out out --fast", "", "", "--fast: unknown option"},
         BadRun{"MissingValue", "run scene.toml --out", "", "", "--out: needs a value"},
+        BadRun{"FallingTable", "run scene.toml --out out", "table.csv",
+               "strain,tension_N_per_m\n0,0\n0.5,10\n0.8,5\n", "table.csv:4: the tension falls with strain"},
+        BadRun{"GridLargerThanMemory", "run scene.toml --out out --set fabric.divisions=[7000,7000]", "", "",
+               "--set: fabric.divisions: a fabric of 4.9e+07 nodes needs at least"},
+        BadRun{"OutputIsAFile", "run scene.toml --out table.csv", "", "", "table.csv: is a file"},
         BadRun{"StartsInside", "run scene.toml --out out --set initial.height_m=0.005", "", "",
                "starts inside body"}),
     [](const auto& case_info) { return std::string(case_info.param.name); });
@@ -240,6 +246,41 @@ TEST_F(RunCommand, BadInputLeavesAnExistingFolderUntouched) {
   dir.write("table.csv", "strain,tension_N_per_m\n0,0\n");
   EXPECT_EQ(run_fabform(dir, "run scene.toml --out out").status, 2);
   EXPECT_EQ(slurp(dir.path("out/result.json")), before);
+}
+
+TEST_F(RunCommand, FallingTableMeantToSoftenRuns) {
+  dir.write("table.csv", "strain,tension_N_per_m\n0,0\n0.5,250\n2,200\n");
+  const Outcome o = run_fabform(dir, "run scene.toml --out out --set fabric.softening=true");
+  EXPECT_EQ(o.status, 0) << o.err;
+}
+
+// Runs `fabform ARGUMENTS` in dir with a 64 kB tmpfs mounted at dir/small, in a mount namespace of
+// its own that vanishes with the process; nullopt where the system refuses namespaces (not root).
+std::optional<Outcome> run_with_small_disk(const test::TempDir& dir, const std::string& arguments) {
+  if (std::system("unshare -m true 2>/dev/null") != 0) return std::nullopt;
+  std::filesystem::create_directories(dir.path("small"));
+  const std::string command = "cd '" + dir.root().string() + "' && unshare -m sh -c 'mount -t tmpfs -o size=64k none small && " +
+                              test::fabform_binary() + " " + arguments + "' >stdout.txt 2>stderr.txt";
+  const int raw = std::system(command.c_str());
+  return Outcome{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir.path("stdout.txt")), slurp(dir.path("stderr.txt"))};
+}
+
+// A mount point cannot be renamed into: found by the probe before the solve, not after it.
+TEST_F(RunCommand, OutputOnAMountPointIsRefusedBeforeTheSolve) {
+  const auto o = run_with_small_disk(dir, "run scene.toml --out small");
+  if (!o) GTEST_SKIP() << "mount namespaces need root";
+  EXPECT_EQ(o->status, 2) << o->err;
+  EXPECT_NE(o->err.find("small: the output folder cannot take results"), std::string::npos) << o->err;
+  EXPECT_EQ(o->err.find("fabform: scene"), std::string::npos) << "the solve started: " << o->err;
+}
+
+// The results outgrow a full disk: the system's reason, its own exit status, nothing half-written.
+TEST_F(RunCommand, FullDiskSaysSoAndExitsFive) {
+  const auto o = run_with_small_disk(dir, "run scene.toml --out small/out --set fabric.divisions=[60,60] --max-iter 2 --quiet");
+  if (!o) GTEST_SKIP() << "mount namespaces need root";
+  EXPECT_EQ(o->status, 5) << o->err;
+  EXPECT_NE(o->err.find("No space left on device"), std::string::npos) << o->err;
+  EXPECT_NE(o->err.find("keeps what it held"), std::string::npos) << o->err;
 }
 
 TEST(Cli, SolversListsEverySolver) {

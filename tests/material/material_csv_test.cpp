@@ -184,6 +184,15 @@ TEST(MaterialCsv, ArealDensityDirective) {
 }
 
 // The shipped tables carry their source's density (kg/m², materials/source/wang2011_berkeley).
+// Where the force first falls with strain, for the scene to refuse unless softening is meant;
+// compression that eases towards zero strain rises, so it is not falling.
+TEST(MaterialCsv, FirstFallingPointIsFound) {
+  std::istringstream falls("strain,tension_N_per_m\n0,0\n0.1,5\n# peak\n0.2,4\n0.3,3\n");
+  EXPECT_EQ(parse_material_file(falls, kSource).falling_line, 5);
+  std::istringstream rises("strain,tension_N_per_m\n-0.1,-2\n0,0\n0.1,5\n0.2,5\n");
+  EXPECT_EQ(parse_material_file(rises, kSource).falling_line, 0);
+}
+
 TEST(MaterialCsv, ShippedTablesStateTheirSourcesDensity) {
   const std::vector<std::pair<std::string, double>> fabrics = {
       {"white-swim-solid", 0.204}, {"ivory-rib-knit", 0.276}, {"11oz-black-denim", 0.324}};

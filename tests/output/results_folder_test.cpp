@@ -89,13 +89,13 @@ TEST(ResultsFolder, FoldersThatAreNotFabformsAreRefused) {
 
 // /proc takes no new folders, whoever asks (CI runs as root, who ignores permission bits).
 TEST(ResultsFolder, UnwritablePlaceIsRefusedBeforeTheRun) {
-  EXPECT_NE(refusal("/proc/fabform-results").find("cannot be written"), std::string::npos);
+  EXPECT_NE(refusal("/proc/fabform-results").find("cannot take results"), std::string::npos);
 }
 
 TEST(ResultsFolder, PlaceUnderAFileIsRefusedBeforeTheRun) {
   test::TempDir dir;
   dir.write("plain", "a file");
-  EXPECT_NE(refusal(dir.path("plain/out")).find("cannot be written"), std::string::npos);
+  EXPECT_NE(refusal(dir.path("plain/out")).find("cannot take results"), std::string::npos);
 }
 
 }  // namespace

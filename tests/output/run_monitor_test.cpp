@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <thread>
 #include <vector>
+
+#include "fabform/error.hpp"
 
 namespace fabform {
 namespace {
@@ -50,6 +53,22 @@ TEST_F(RunMonitorTest, CheckpointsEveryKIterationsWithTheHistorySoFar) {
     EXPECT_EQ(published[c].x[0].x(), at) << "the state of that iteration";
     EXPECT_NE(s.message.find("checkpoint after iteration " + std::to_string(at)), std::string::npos);
   }
+}
+
+// A checkpoint the disk cannot take does not end the run: the next one is tried when due.
+TEST_F(RunMonitorTest, ACheckpointThatCannotBeWrittenDoesNotStopTheRun) {
+  int attempts = 0;
+  RunMonitor m(state, begin_summary("relax", 1e-6, {}), {2, 0.0},
+               [&](const SolverState&, const Summary&) {
+                 ++attempts;
+                 if (attempts == 1) throw SystemError("out/result.json", "write", system_reason(ENOSPC));
+                 published.push_back({state.x, {}});
+               },
+               nullptr);
+  for (int k = 0; k <= 4; ++k) EXPECT_NO_THROW(iterate(m, k));
+  EXPECT_EQ(attempts, 2) << "after iterations 2 and 4";
+  ASSERT_EQ(published.size(), 1u);
+  EXPECT_EQ(published[0].x[0].x(), 4);
 }
 
 TEST_F(RunMonitorTest, CheckpointsEveryMMinutes) {

@@ -77,7 +77,8 @@ Section fabric_section(Base base) {
     outline = {{"shape", "\"rectangle\""}, {"size_m", "[0.1, 0.1]"}, {"divisions", "[4, 4]"}};
   outline.insert(outline.end(), {{"origin_m", "[0.0, 0.0, 0.05]"},
                                  {"warp", "\"../materials/white-swim-solid_warp.csv\""},
-                                 {"weft", "\"../materials/white-swim-solid_weft.csv\""}});
+                                 {"weft", "\"../materials/white-swim-solid_weft.csv\""},
+                                 {"softening", "false"}});
   return {"fabric", "[fabric]", outline};
 }
 
@@ -262,6 +263,9 @@ const std::vector<KeyRow>& key_table() {
        {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
       {"fabric.weft",                    T::text,      lift, R,   _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
+      {"fabric.softening",               T::only_extras, lift, _, _,  _,   _,   _,    "",
+       {{"true", "true", A, kSame}, {"false", "false", A, kSame}, {"a_number", "1", R, kSame},
+        {"a_string", "\"yes\"", R, kSame}}},
       {"body",                           T::table_array, lift, A, _,  _,   _,   _,    "", {}},
       {"body.0.name",                    T::text,      lift, A,   _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb\"", R, kSame}}},

@@ -1,7 +1,7 @@
 #pragma once
 // PNG images in and out, through libpng's simplified API (Debian's libpng-dev): any PNG is read
 // as 8-bit RGBA, images are written as 8-bit RGBA. libpng's errors become InputError naming
-// the file. Writing the bytes is the caller's (result_writer.hpp's write_file_atomically).
+// the file. Writing the bytes is the caller's (atomic_file.hpp's write_file_atomically).
 #include <cstdint>
 #include <string>
 #include <vector>

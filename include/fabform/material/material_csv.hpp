@@ -16,6 +16,7 @@ struct MaterialFile {
   TensionTable table;
   std::optional<double> areal_density_kg_m2;
   int areal_density_line = 0;  // where the directive is, for errors about it
+  int falling_line = 0;        // the first point whose value is below the one before (0: never falls)
 };
 
 /// Reads a material file; throws InputError naming the file and line on any problem.

@@ -49,10 +49,8 @@ StepResult step_result(const RunRecord& run, int step);
 /// and step files; throws InputError naming what is missing or damaged.
 std::vector<StepResult> read_step_results(const std::string& dir);
 
-/// Creates or replaces the folder; throws std::runtime_error naming the path if it cannot write.
+/// Creates or replaces the folder; throws SystemError naming the path and the system's reason
+/// if it cannot write, the folder then holding what it held.
 void write_results(const std::string& dir, const RunRecord& run);
-
-/// Writes `content` to path.tmp then renames it over path.
-void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace fabform

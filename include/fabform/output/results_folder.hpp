@@ -13,12 +13,13 @@ namespace fabform {
 using ResultFile = std::pair<std::string, std::string>;
 
 /// Checks, before a long solve, that `dir` can take results: it is new, empty, or an earlier
-/// run's results folder (it holds result.json), and files can be written beside it. Throws
-/// InputError naming the folder and what is wrong.
+/// run's results folder (it holds result.json), and a small folder can be written beside it and
+/// renamed into its place (then undone). Throws InputError naming the folder and what is wrong,
+/// with the system's reason.
 void check_results_folder(const std::string& dir);
 
-/// Replaces the folder's content by exactly `files`, at once. Throws std::runtime_error naming
-/// the folder when it cannot; the folder then still holds what it held.
+/// Replaces the folder's content by exactly `files`, at once. Throws SystemError naming
+/// the folder and the system's reason when it cannot; the folder then still holds what it held.
 void publish_results(const std::string& dir, const std::vector<ResultFile>& files);
 
 }  // namespace fabform

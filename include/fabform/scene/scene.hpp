@@ -121,6 +121,7 @@ struct Scene {
   SourceLocation warp_where;
   std::string weft_path;
   SourceLocation weft_where;
+  bool softening = false;  // [fabric] softening: tension tables may fall with strain, as meant
   std::vector<BodySpec> bodies;
   std::vector<ConstraintSpec> constraints;
   GravitySpec gravity;

@@ -16,7 +16,7 @@ bool on_path(const std::string& name);
 
 /// Starts argv (argv[0] looked up on $PATH) in a process group of its own, so a Ctrl-C on the
 /// study's terminal reaches the study alone, which then asks each case once to stop. Its
-/// standard output and error go to `log`. Returns its process id; throws std::runtime_error
+/// standard output and error go to `log`. Returns its process id; throws SystemError
 /// when it cannot fork.
 pid_t start_process(const std::vector<std::string>& argv, const std::string& log);
 

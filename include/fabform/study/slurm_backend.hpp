@@ -32,7 +32,7 @@ std::string slurm_script(const StudySpec& spec, const std::string& dir, const st
 
 /// Writes the script, submits it and follows its tasks to their end; returns how the cases
 /// that left no finished result ended (cancelled, timeout, failed). An interrupt to the study
-/// cancels the job. Throws std::runtime_error with sbatch's message when it refuses the job.
+/// cancels the job. Throws SystemError with sbatch's message when it refuses the job.
 CaseEndings run_on_slurm(const StudySpec& spec, const std::string& dir, const std::vector<int>& todo,
                          const SlurmOptions& options, StudyProgress& progress);
 
