@@ -84,9 +84,11 @@ void add_gravity(const Scene& scene, const MaterialFile& warp, const MaterialFil
   model->areal_density_kg_m2 = density;
 }
 
-RigidBody build_body(const BodySpec& spec) {
+RigidBody build_body(const BodySpec& spec, std::vector<std::string>* warnings) {
   require_file(spec.mesh_path, spec.mesh_where, "mesh");
-  TriangleMesh mesh = place(read_mesh(spec.mesh_path), spec.placement);
+  std::vector<std::string> read;
+  TriangleMesh mesh = place(read_mesh(spec.mesh_path, &read), spec.placement);
+  for (const std::string& w : read) warnings->push_back(spec.mesh_path + ": " + w);
   if (!within_range(mesh.vertices))
     throw InputError(spec.where, "the placed mesh reaches beyond 1e6 m: check units, scale and translation");
   try {
@@ -98,9 +100,9 @@ RigidBody build_body(const BodySpec& spec) {
   }
 }
 
-std::vector<RigidBody> build_bodies(const Scene& scene) {
+std::vector<RigidBody> build_bodies(const Scene& scene, std::vector<std::string>* warnings) {
   std::vector<RigidBody> bodies;
-  for (const BodySpec& spec : scene.bodies) bodies.push_back(build_body(spec));
+  for (const BodySpec& spec : scene.bodies) bodies.push_back(build_body(spec, warnings));
   return bodies;
 }
 
@@ -303,8 +305,10 @@ Model build_model(const Scene& scene) {
   Fabric fabric = build_fabric(scene);
   const MaterialFile warp = read_material(scene, scene.warp_path, scene.warp_where);
   const MaterialFile weft = read_material(scene, scene.weft_path, scene.weft_where);
-  Model model{fabric, warp.table, weft.table, build_locks(scene, fabric), build_bodies(scene),
+  std::vector<std::string> read_warnings;
+  Model model{fabric, warp.table, weft.table, build_locks(scene, fabric), build_bodies(scene, &read_warnings),
               build_start(scene, fabric)};
+  model.read_warnings = std::move(read_warnings);
   model.paths = build_paths(scene, model.bodies);
   add_shear(scene, &model);
   add_bending(scene, &model);

@@ -67,6 +67,14 @@ TEST_F(RunCommand, ConvergedRunWritesEveryResult) {
     EXPECT_NE(entry.path().extension(), ".tmp") << "left a temporary file: " << entry.path();
 }
 
+// What a reader skipped in a body's file is among the run's warnings, as check prints it.
+TEST_F(RunCommand, WhatTheMeshReaderSkippedIsWarned) {
+  dir.write("sphere.obj", slurp(dir.path("sphere.obj")) + "l 1 2\n");
+  const Outcome o = run_fabform(dir, "run scene.toml --out out --quiet");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(slurp(dir.path("out/result.json")).find("sphere.obj: skipped 1 point, line or face"), std::string::npos);
+}
+
 TEST_F(RunCommand, IterationCapExitsThreeAndSaysSo) {
   const Outcome o = run_fabform(dir, "run scene.toml --out out --max-iter 2 --tol 1e-9");
   EXPECT_EQ(o.status, 3) << o.err;
