@@ -213,8 +213,8 @@ def deviations(new: dict, golden: dict) -> dict:
     out = {"position_m": float(moved.max()),
            "warp_strain": abs(new["warp_strain"] - golden["warp_strain"]),
            "weft_strain": abs(new["weft_strain"] - golden["weft_strain"])}
-    if golden.get("drape") is not None and new.get("drape") is not None:
-        out["drape"] = abs(new["drape"] - golden["drape"])
+    if golden.get("drape") is not None:  # a drape coefficient lost is as wrong as one moved
+        out["drape"] = abs(new["drape"] - golden["drape"]) if new.get("drape") is not None else math.inf
     return out
 
 

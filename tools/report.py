@@ -438,8 +438,9 @@ def make_report(run: pathlib.Path) -> pathlib.Path:
         stem = name.removesuffix("_deg")
         fabric_map(run, fabric, fields[name], bodies, stem, label, title, per_cell=True, cmap_name=cmap)
         pictures.append((f"{stem}.png", title))
-    draw_in_map(run, fabric, read_obj(run / "blank.obj"), fields["draw_in_m"])
-    pictures.append(("draw_in.png", "draw-in round the blank's edge"))
+    if (run / "blank.obj").is_file():  # a checkpoint's folder has no flat-formed map yet
+        draw_in_map(run, fabric, read_obj(run / "blank.obj"), fields["draw_in_m"])
+        pictures.append(("draw_in.png", "draw-in round the blank's edge"))
     if bodies:
         pressure = read_vtk_fields(run / "bodies.vtk")
         if "contact_pressure_Pa" not in pressure:

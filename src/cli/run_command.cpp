@@ -95,9 +95,9 @@ int exit_status(Termination termination) {
 }
 
 // What matters for contact in the bodies themselves, found once, as CGAL's checks of a large
-// mesh take a while (with what reading their files tolerated): a body contact cannot use
-// (inverted or inconsistent faces) is refused in
-// the words fabform check refuses its file with; self-intersections are warned about.
+// mesh take a while: a body contact cannot use (inverted or inconsistent faces) is refused in
+// the words fabform check refuses its file with; self-intersections, and what reading the
+// files skipped or tolerated, are warned about.
 std::vector<std::string> body_warnings(const Scene& scene, const Model& model) {
   std::vector<std::string> warnings = model.read_warnings;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {

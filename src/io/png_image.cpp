@@ -30,6 +30,9 @@ class PngImage {
 };
 
 constexpr int kMaxSide = 1 << 15;  // a side beyond this is a damaged header, not an image to print
+// A few bytes of header can claim gigabytes of pixels; a design beyond 64 megapixels (8192² at
+// 4 bytes, 256 MB) is refused before anything is allocated.
+constexpr double kMaxPixels = double(1 << 26);
 
 }  // namespace
 
@@ -41,6 +44,8 @@ Image read_png(const std::string& path) {
   png.get()->format = PNG_FORMAT_RGBA;
   if (png.get()->width == 0 || png.get()->height == 0 || png.get()->width > kMaxSide || png.get()->height > kMaxSide)
     throw InputError({path, 0, ""}, "cannot read as PNG: an image must have 1 to 32768 pixels a side");
+  if (double(png.get()->width) * png.get()->height > kMaxPixels)
+    throw InputError({path, 0, ""}, "cannot read as PNG: more than 67108864 pixels (a design to print needs far fewer)");
   Image image(static_cast<int>(png.get()->width), static_cast<int>(png.get()->height));
   if (!png_image_finish_read(png.get(), nullptr, image.rgba.data(), 0, nullptr))
     throw InputError({path, 0, ""}, "cannot read as PNG: " + png.message());

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 
 #include "fabform/error.hpp"
 #include "fabform/output/atomic_file.hpp"
@@ -49,6 +50,7 @@ void swap_in(const fs::path& staged, const fs::path& dir) {
     cannot_replace(dir, ec);
   }
   fs::rename(old, staged, ec);  // removed by the caller with the staging folder
+  if (ec) fs::remove_all(old, ec);  // the new results are in place; the old ones go either way
 }
 
 // Fills a fresh staging folder beside `dir` with `files`.
@@ -73,17 +75,31 @@ void put_in_place(const fs::path& staged, const fs::path& dir) {
   if (std::rename(staged.c_str(), dir.c_str()) != 0) throw SystemError(dir.string(), "create", system_reason(errno));
 }
 
-// What a publish will do, done once with a small file and undone: a folder fabform cannot
-// create, fill or rename into place (a full or read-only disk, a mount point) fails here, before
-// the solve, not after it.
+// A folder on another file system than its parent (a mount point) cannot be renamed, so the
+// results could never be swapped into it.
+void require_renamable(const fs::path& dir) {
+  struct stat own{}, parent{};
+  const fs::path above = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
+  if (::stat(dir.c_str(), &own) != 0 || ::stat(above.c_str(), &parent) != 0)
+    throw SystemError(dir.string(), "examine the folder", system_reason(errno));
+  if (own.st_dev != parent.st_dev)
+    throw SystemError(dir.string(), "replace the results", "it is a mount point; choose a folder inside it");
+}
+
+// What a publish will do, done once with a small file before the solve, so that a folder fabform
+// cannot create, fill or rename into place (a full or read-only disk, a mount point) fails now,
+// not after it. An existing folder is never moved by the probe: a killed probe loses nothing.
 void probe(const fs::path& dir) {
   const fs::path staged = stage(dir, "probe", {{"probe", "fabform checks it can write here\n"}});
   std::error_code ec;
   try {
-    const bool existed = fs::exists(dir);
-    put_in_place(staged, dir);
-    if (existed) swap_in(staged, dir);  // the second exchange gives the earlier results back
-    else fs::rename(dir, staged, ec);
+    if (fs::exists(dir)) {
+      require_renamable(dir);
+    } else {
+      put_in_place(staged, dir);
+      fs::rename(dir, staged, ec);
+      if (ec) throw SystemError(dir.string(), "undo the probe", ec.message());
+    }
   } catch (...) {
     fs::remove_all(staged, ec);
     throw;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <system_error>
 #include <utility>
 
 #include "fabform/error.hpp"
@@ -13,6 +14,10 @@ namespace {
 // grids) a good share of its time; a copy is taken once the time since the last is this many
 // times what the last copy took, bounding the cost near 5 %.
 constexpr double kCopyIntervalFactor = 20.0;
+
+void warn_unwritten(const std::exception& error) {
+  std::fprintf(stderr, "\nfabform: warning: checkpoint not written: %s; the last one written is kept\n", error.what());
+}
 
 }  // namespace
 
@@ -53,7 +58,9 @@ void RunMonitor::checkpoint() {
   try {
     publish_(state_, snapshot);
   } catch (const SystemError& error) {
-    std::fprintf(stderr, "\nfabform: warning: checkpoint not written: %s; the last one written is kept\n", error.what());
+    warn_unwritten(error);
+  } catch (const std::system_error& error) {  // a file system call of the results folder's
+    warn_unwritten(error);
   }
   iterations_since_checkpoint_ = 0;
   last_checkpoint_time_ = Clock::now();

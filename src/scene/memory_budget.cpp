@@ -32,12 +32,33 @@ double meminfo_bytes(const char* key) {
   return std::numeric_limits<double>::infinity();
 }
 
-// Bytes a cgroup v2 limit still allows; infinity where there is no limit.
+// The process's own cgroup (v2) folder, from /proc/self/cgroup's "0::/PATH" line.
+std::string own_cgroup() {
+  std::ifstream in("/proc/self/cgroup");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("0::", 0) == 0) return "/sys/fs/cgroup" + line.substr(3);
+  return "/sys/fs/cgroup";
+}
+
+// A "key value" line of a cgroup's memory.stat; 0 if absent.
+double memory_stat(const std::string& cgroup, const std::string& key) {
+  std::ifstream in(cgroup + "/memory.stat");
+  std::string name;
+  double value = 0.0;
+  while (in >> name >> value)
+    if (name == key) return value;
+  return 0.0;
+}
+
+// Bytes the process's cgroup v2 limit still allows, counting the page cache it could drop as
+// free; infinity where there is no limit ("max") or no cgroup v2.
 double cgroup_room_bytes() {
-  std::ifstream max_file("/sys/fs/cgroup/memory.max"), current_file("/sys/fs/cgroup/memory.current");
+  const std::string cgroup = own_cgroup();
+  std::ifstream max_file(cgroup + "/memory.max"), current_file(cgroup + "/memory.current");
   double max = 0.0, current = 0.0;
-  if (!(max_file >> max) || !(current_file >> current)) return std::numeric_limits<double>::infinity();  // "max"
-  return max - current;
+  if (!(max_file >> max) || !(current_file >> current)) return std::numeric_limits<double>::infinity();
+  return max - std::max(0.0, current - memory_stat(cgroup, "inactive_file"));
 }
 
 std::string gigabytes(double bytes) {

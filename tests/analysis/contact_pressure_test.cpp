@@ -1,8 +1,8 @@
 // Contact pressure against Laplace's law: a band of tension T (N/m) wrapped round a cylinder of
 // radius r presses p = T / r on it. The band is tests/support/band_over_cylinder.hpp's, solved
 // frictionless by newton, so T is one value all along, read off its pulled end; the wrap's nodes
-// (3° apart on a 2048-facet cylinder) must carry T / r
-// within 5 % (the discrete wrap's own error, its 3° chords, is about 1e-4).
+// (3° apart on a 2048-facet cylinder) must carry T / r within 1 % (the target is 5 %;
+// measured 0.11 %, the discrete wrap's own error, its 3° chords, being about 1e-4).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,8 +41,8 @@ TEST(ContactPressure, BandRoundACylinderPressesTOverR) {
     ++checked;
   }
   EXPECT_GE(checked, 2 * 50);
-  EXPECT_LT(worst, 0.05);
-  EXPECT_NEAR(p.max_Pa, laplace_Pa, 0.05 * laplace_Pa);
+  EXPECT_LT(worst, 0.01);
+  EXPECT_NEAR(p.max_Pa, laplace_Pa, 0.01 * laplace_Pa);
   std::printf("laplace: T = %.6g N/m, r = %.3g m, T/r = %.6g Pa, max p = %.6g Pa, worst node error %.3g %%\n",
               tension_N_m, kRadius_m, laplace_Pa, p.max_Pa, 100.0 * worst);
 
@@ -51,7 +51,7 @@ TEST(ContactPressure, BandRoundACylinderPressesTOverR) {
   for (const double v : p.body_vertex_Pa[0]) EXPECT_EQ(v, 0.0);
 }
 
-TEST(ContactPressure, NoBodyNoPressure) {
+TEST(ContactPressure, NoNodeInContactNoPressure) {
   test::BandOverCylinder band(0.0, 0.0);
   const std::vector<unsigned char> none(static_cast<std::size_t>(band.model.node_count()), 0);
   const ContactPressure p = contact_pressure(band.model, band.state.x, none);

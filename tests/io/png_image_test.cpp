@@ -2,6 +2,8 @@
 // refused with an InputError naming the file.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 #include "fabform/error.hpp"
 #include "fabform/io/png_image.hpp"
 #include "support/temp_dir.hpp"
@@ -32,6 +34,35 @@ TEST(PngImage, RefusesWhatIsNotAPngNamingTheFile) {
       EXPECT_EQ(error.where().file, path);
       EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos);
     }
+  }
+}
+
+// The chunk checksum PNG uses (CRC-32, ISO 3309), to forge a header.
+std::uint32_t crc32(const std::string& bytes) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (const unsigned char b : bytes) {
+    crc ^= b;
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+std::string big_endian(std::uint32_t v) {
+  return {char(v >> 24), char((v >> 16) & 0xFF), char((v >> 8) & 0xFF), char(v & 0xFF)};
+}
+
+// A 1 × 1 image whose header claims 20000 × 20000 pixels (1.6 GB): refused before allocating.
+TEST(PngImage, RefusesAHeaderClaimingBillionsOfBytes) {
+  test::TempDir dir;
+  std::string bytes = png_bytes(Image(1, 1));
+  const std::string claimed = big_endian(20000) + big_endian(20000);
+  bytes.replace(16, 8, claimed);                       // IHDR's width and height
+  bytes.replace(29, 4, big_endian(crc32(bytes.substr(12, 17))));  // its type and data
+  try {
+    read_png(dir.write("forged.png", bytes));
+    ADD_FAILURE() << "read";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("more than 67108864 pixels"), std::string::npos) << error.what();
   }
 }
 

@@ -69,6 +69,17 @@ TEST(ResultsFolder, NewEmptyOrEarlierResultsAreAccepted) {
   EXPECT_NO_THROW(check_results_folder(dir.path("earlier")));
 }
 
+// The probe never moves an existing folder and leaves nothing beside it.
+TEST(ResultsFolder, TheProbeLeavesEarlierResultsAndNoTrace) {
+  test::TempDir dir;
+  publish_results(dir.path("earlier"), {{"result.json", "{\"converged\": true}"}, {"checkpoint.bin", "state"}});
+  check_results_folder(dir.path("earlier"));
+  check_results_folder(dir.path("fresh"));
+  EXPECT_EQ(names_in(dir.path("earlier")), (std::set<std::string>{"result.json", "checkpoint.bin"}));
+  EXPECT_EQ(test::slurp(dir.path("earlier/checkpoint.bin")), "state");
+  EXPECT_EQ(names_in(dir.root().string()), std::set<std::string>{"earlier"}) << "a probe or the new folder was left";
+}
+
 std::string refusal(const std::string& folder) {
   try {
     check_results_folder(folder);

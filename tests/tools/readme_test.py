@@ -22,6 +22,7 @@ LINK = re.compile(r"\[[^\]]*\]\(([^)\s]+)\)")
 CODE = re.compile(r"`([^`\n]+)`")
 PATH = re.compile(r"^(?:\./)?(?:%s)/[\w./+-]*[\w/]$" % "|".join(re.escape(f) for f in FOLDERS))
 PLACEHOLDER = re.compile(r"[A-Z]{2,}(?![a-z])|[*{}<>]")
+CAPITALISED_FILES = re.compile(r"README|LICENSES?|SOURCES|FORMAT")  # real names, not placeholders
 CITES_UPSTREAM = re.compile(r"ARCSim|[\w.-]+/[\w.-]+ @ [0-9a-f]{7}|in the repository `")
 
 
@@ -34,9 +35,34 @@ def markdown_files():
     return [p for p in found if "LICENSES" not in p.parts and "licenses" not in p.parts]
 
 
+def tracked():
+    """The files git tracks (and their folders), or None outside a checkout: a file that exists
+    here but is not committed would not reach a clone."""
+    listed = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True)
+    if listed.returncode != 0:
+        return None
+    names = set()
+    for name in listed.stdout.split("\n"):
+        path = pathlib.PurePosixPath(name)
+        names.update({str(path), *(str(p) for p in path.parents)})
+    return names
+
+
+TRACKED = tracked()
+
+
 def exists(name, beside):
     name = name.split("#", 1)[0].rstrip("/")
-    return not name or (beside / name).exists() or (ROOT / name).exists()
+    if not name:
+        return True
+    for path in (beside / name, ROOT / name):
+        try:
+            relative = str(pathlib.PurePosixPath(path.resolve().relative_to(ROOT)))
+        except ValueError:
+            continue
+        if path.exists() and (TRACKED is None or relative in TRACKED):
+            return True
+    return False
 
 
 def paragraphs(text):
@@ -68,7 +94,7 @@ def named_in_line(number, line, cites_upstream):
         for code in CODE.findall(line):
             for word in code.replace("=", " ").replace(",", " ").split():
                 word = word.strip("'\"();:")
-                if PATH.match(word) and not PLACEHOLDER.search(word):
+                if PATH.match(word) and not PLACEHOLDER.search(CAPITALISED_FILES.sub("", word)):
                     yield number, word
 
 
