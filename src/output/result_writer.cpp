@@ -91,25 +91,29 @@ nlohmann::json drape_json(const RunRecord& run) {
 }
 
 // The locking angle a cell's shear is judged by: the shear table's when it has one (it
-// stiffens), else CellDeformationOptions' default.
-std::pair<CellDeformationOptions, const char*> deformation_options(const Model& model) {
+// stiffens), else the scene's fabric.locking_angle_deg, else CellDeformationOptions' default.
+std::pair<CellDeformationOptions, const char*> deformation_options(const RunRecord& run) {
   CellDeformationOptions options;
-  if (model.shear)
-    if (const std::optional<double> locking = locking_angle_deg(*model.shear); locking && *locking > 0.0 && *locking < 90.0) {
+  if (run.model.shear)
+    if (const std::optional<double> locking = locking_angle_deg(*run.model.shear); locking && *locking > 0.0 && *locking < 90.0) {
       options.locking_angle_deg = *locking;
       return {options, "shear table"};
     }
+  if (run.scene.locking_angle_deg) {
+    options.locking_angle_deg = *run.scene.locking_angle_deg;
+    return {options, "scene"};
+  }
   return {options, "default"};
 }
 
 CellDeformation deformation_of(const RunRecord& run) {
-  return cell_deformation(run.model, run.state.x, deformation_options(run.model).first);
+  return cell_deformation(run.model, run.state.x, deformation_options(run).first);
 }
 
 // What a forming engineer reads: shear, thinning, wrinkle risk and the pressure on the bodies.
 void forming_figures(const RunRecord& run, nlohmann::json& figures) {
   const CellDeformation d = deformation_of(run);
-  const auto [options, locking_from] = deformation_options(run.model);
+  const auto [options, locking_from] = deformation_options(run);
   const auto face_centre = [&](int f) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     const Face& face = run.model.fabric.faces()[static_cast<std::size_t>(f)];

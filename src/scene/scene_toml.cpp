@@ -141,12 +141,17 @@ void read_fabric(TableReader& r, Scene* scene) {
   scene->weft_path = resolve(scene->path, plain_text(r, "weft", "", true));
   scene->weft_where = r.locate_key("weft");
   scene->softening = r.flag("softening", false);
+  if (r.has("locking_angle_deg")) {
+    scene->locking_angle_deg = r.number("locking_angle_deg", 45.0);
+    if (!(*scene->locking_angle_deg > 0.0 && *scene->locking_angle_deg < 90.0))
+      r.fail("locking_angle_deg", "must lie between 0 and 90 degrees");
+  }
   if (shape == "rectangle")
-    r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening"});
+    r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg"});
   else if (scene->fabric.mesh == FabricSpec::Mesh::arc)
-    r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft", "softening"});
+    r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft", "softening", "locking_angle_deg"});
   else
-    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft", "softening"});
+    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg"});
 }
 
 void read_shear(TableReader r, Scene* scene) {

@@ -262,6 +262,20 @@ TEST_F(RunCommand, GridLargerThanMemoryIsRefusedWithTheEstimate) {
                  "--set: fabric.divisions: a fabric of 4.9e+07 nodes needs at least 36.8 GB with solver relax");
 }
 
+// Without a shear table that stiffens, the scene says where a cell locks.
+TEST_F(RunCommand, TheScenesLockingAngleJudgesTheShear) {
+  const Outcome scene_value = run_fabform(dir, "run scene.toml --out out --quiet --set fabric.locking_angle_deg=0.01");
+  ASSERT_EQ(scene_value.status, 0) << scene_value.err;
+  const std::string json = slurp(dir.path("out/result.json"));
+  EXPECT_NE(json.find("\"locking_angle_from\": \"scene\""), std::string::npos);
+  EXPECT_NE(json.find("\"locking_angle_deg\": 0.01"), std::string::npos);
+  const std::size_t at = json.find("\"wrinkle_cells\": ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_GT(std::stoi(json.substr(at + 17)), 0) << "a fabric over a sphere shears by more than 0.01 degrees";
+  ASSERT_EQ(run_fabform(dir, "run scene.toml --out out --quiet").status, 0);
+  EXPECT_NE(slurp(dir.path("out/result.json")).find("\"locking_angle_from\": \"default\""), std::string::npos);
+}
+
 TEST_F(RunCommand, FallingTableMeantToSoftenRuns) {
   dir.write("table.csv", "strain,tension_N_per_m\n0,0\n0.5,250\n2,200\n");
   const Outcome o = run_fabform(dir, "run scene.toml --out out --set fabric.softening=true");

@@ -78,7 +78,7 @@ Section fabric_section(Base base) {
   outline.insert(outline.end(), {{"origin_m", "[0.0, 0.0, 0.05]"},
                                  {"warp", "\"../materials/white-swim-solid_warp.csv\""},
                                  {"weft", "\"../materials/white-swim-solid_weft.csv\""},
-                                 {"softening", "false"}});
+                                 {"softening", "false"}, {"locking_angle_deg", "45.0"}});
   return {"fabric", "[fabric]", outline};
 }
 
@@ -263,6 +263,8 @@ const std::vector<KeyRow>& key_table() {
        {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
       {"fabric.weft",                    T::text,      lift, R,   _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
+      {"fabric.locking_angle_deg",       T::number,    lift, A,   R,  R,   R,   _,    "",
+       {{"ninety", "90.0", R, kSame}, {"thirty", "30.0", A, kSame}}},
       {"fabric.softening",               T::only_extras, lift, _, _,  _,   _,   _,    "",
        {{"true", "true", A, kSame}, {"false", "false", A, kSame}, {"a_number", "1", R, kSame},
         {"a_string", "\"yes\"", R, kSame}}},

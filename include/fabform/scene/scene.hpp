@@ -1,6 +1,7 @@
 #pragma once
 // A scene as fabform runs it: validated, in SI units, with every path resolved against the
 // scene file's folder and every value remembering where it was written (for error messages).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,7 @@ struct Scene {
   std::string weft_path;
   SourceLocation weft_where;
   bool softening = false;  // [fabric] softening: tension tables may fall with strain, as meant
+  std::optional<double> locking_angle_deg;  // [fabric]: where a cell locks, without a stiffening shear table
   std::vector<BodySpec> bodies;
   std::vector<ConstraintSpec> constraints;
   GravitySpec gravity;
