@@ -21,12 +21,9 @@ std::vector<double> tributary_areas(const Fabric& fabric, const std::vector<Eige
 // The body's reaction on a node it touches: the nearest body's normal decides the direction.
 double reaction_N(const Model& model, const std::vector<Eigen::Vector3d>& x, int node) {
   const auto k = static_cast<std::size_t>(node);
-  SurfacePoint nearest;
-  nearest.distance = -1.0;
-  for (const RigidBody& body : model.bodies)
-    if (const SurfacePoint s = body.closest(x[k]); nearest.distance < 0.0 || s.distance < nearest.distance) nearest = s;
-  if (nearest.distance < 0.0) return 0.0;
-  return pressing_force(node_force(model, x, node), model.locks[k], nearest.normal);
+  const NearestSurface nearest = nearest_surface(model, x[k]);
+  if (nearest.body < 0) return 0.0;
+  return pressing_force(node_force(model, x, node), model.locks[k], nearest.point.normal);
 }
 
 // The force with which the springs wrapped over the bodies' edges press on them, half on each

@@ -21,7 +21,7 @@ namespace fabform::cli {
 namespace {
 
 int predistort_files(const std::vector<std::string>& args) {
-  if (args.size() != 3 || (!args.empty() && args[0].rfind('-', 0) == 0))
+  if (args.size() != 3 || args[0].rfind('-', 0) == 0)
     throw InputError({"command line", 0, ""}, "usage: fabform predistort RESULT_DIR IMAGE OUT.png");
   const std::filesystem::path folder = std::filesystem::path(args[2]).parent_path();
   if (!folder.empty() && !std::filesystem::is_directory(folder))

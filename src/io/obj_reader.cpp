@@ -29,6 +29,8 @@ std::vector<Eigen::Vector3d> positions_of(const std::string& text) {
 class ObjBuilder {
  public:
   explicit ObjBuilder(std::vector<Eigen::Vector3d> positions) : positions_(std::move(positions)) {}
+  ObjBuilder(const ObjBuilder&) = delete;  // welder_ points into this object's own mesh
+  ObjBuilder& operator=(const ObjBuilder&) = delete;
 
   void vertex() { ++read_; }
 
@@ -41,7 +43,9 @@ class ObjBuilder {
     std::vector<int> index;
     std::vector<Eigen::Vector3d> points;
     for (std::size_t c = 1; c <= corners; ++c) {
-      const Eigen::Vector3d& p = positions_[position_of(line.words[c])];
+      // at(): check_mesh_file checked the indices, but of its own read of the file, which may
+      // have changed since; a wrong index must not read past the positions.
+      const Eigen::Vector3d& p = positions_.at(position_of(line.words[c]));
       index.push_back(welder_.index_of(p));
       points.push_back(p);
     }

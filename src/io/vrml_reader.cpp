@@ -505,6 +505,10 @@ bool two_sided(const SoNode* node) {
 }
 
 struct Traversal {
+  Traversal() = default;
+  Traversal(const Traversal&) = delete;  // welder points into this object's own mesh
+  Traversal& operator=(const Traversal&) = delete;
+
   TriangleMesh mesh;
   VertexWelder welder{&mesh.vertices};
 

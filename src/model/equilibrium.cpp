@@ -32,13 +32,6 @@ double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Ei
   return std::max(-remove_locked(resultant, locks).dot(normal_free) / length2, 0.0);
 }
 
-namespace {
-
-struct NearestSurface {
-  SurfacePoint point;
-  int body = -1;  // -1: the model has no body
-};
-
 NearestSurface nearest_surface(const Model& model, const Eigen::Vector3d& p) {
   NearestSurface nearest;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
@@ -47,6 +40,8 @@ NearestSurface nearest_surface(const Model& model, const Eigen::Vector3d& p) {
   }
   return nearest;
 }
+
+namespace {
 
 enum class Grip { none, sliding, stuck };
 

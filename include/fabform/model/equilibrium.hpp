@@ -26,6 +26,13 @@ Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask lock
 /// with the held axes removed); a node held on every axis the body cannot be pressing on.
 double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Eigen::Vector3d& normal);
 
+/// The body surface nearest to p, and which body it is (-1 for a model without bodies).
+struct NearestSurface {
+  SurfacePoint point;
+  int body = -1;
+};
+NearestSurface nearest_surface(const Model& model, const Eigen::Vector3d& p);
+
 struct EquilibriumReport {
   std::vector<double> residual_N;      // V_k per node
   std::vector<unsigned char> contact;  // 1 where the node lies on a body
