@@ -87,7 +87,7 @@ ContactPressure contact_pressure(const Model& model, const std::vector<Eigen::Ve
     if ((!contact[i] && over_edges[i] == 0.0) || !(area[i] > 0.0)) continue;
     const double lambda = (contact[i] ? reaction_N(model, x, k) : 0.0) + over_edges[i];
     p.node_Pa[i] = lambda / area[i];
-    force += lambda, contact_area += area[i];
+    if (lambda > 0.0) force += lambda, contact_area += area[i];  // the mean is over the area that presses
     if (p.max_node < 0 || p.node_Pa[i] > p.max_Pa) p.max_Pa = p.node_Pa[i], p.max_node = k;
     if (lambda > 0.0) pressing.push_back(k), reach.push_back(reach_m(model.fabric, x, k));
   }

@@ -23,7 +23,7 @@ struct ContactPressure {
   std::vector<std::vector<double>> body_vertex_Pa;  // per body, per vertex of its posed mesh
   double max_Pa = 0.0;
   int max_node = -1;                            // -1: no node presses on a body
-  double mean_Pa = 0.0;                         // the contact force over the contact area
+  double mean_Pa = 0.0;                         // the contact force over the area of the nodes that press
 };
 
 /// The pressure at `x`; `contact` flags the nodes on a body (EquilibriumReport::contact).
