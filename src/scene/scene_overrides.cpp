@@ -106,6 +106,8 @@ toml::table& parent_table(toml::table& root, const std::vector<std::string>& par
 
 void apply_override(toml::table& root, const SceneOverride& o, OverriddenKeys* created) {
   const auto parts = split_key(o.key);
+  // A study's key reaches here unchecked by parse_override ("" in a [grid], found by fuzzing).
+  if (parts.empty()) throw InputError({kOverrideSource, 0, shown(o.key)}, "an empty key names no scene value");
   for (const auto& p : parts)
     if (p.empty()) throw InputError({kOverrideSource, 0, shown(o.key)}, "empty part in the dotted key");
   for (const auto& p : parts)

@@ -264,6 +264,8 @@ TEST(LoadScene, BadOverrideIsBlamedOnTheCommandLine) {
   EXPECT_EQ(unknown.where().key, "solver.speed");
   const InputError index = load_error(kMinimal, {{"constraint.5.axes", "x"}});
   EXPECT_EQ(index.where().key, "constraint.5.axes");
+  for (const char* key : {"", ".", "solver."})  // a study's keys come without parse_override's check
+    EXPECT_EQ(load_error(kMinimal, {{key, "3"}}).where().file, "command line --set") << "'" << key << "'";
 }
 
 TEST(ParseOverride, SplitsAtTheFirstEquals) {
