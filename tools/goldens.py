@@ -233,6 +233,13 @@ def write_tolerances(table: dict) -> None:
     temporary.replace(TOLERANCES)
 
 
+def not_reached(table: dict, key: str, reason: str) -> None:
+    """Records why a scene x solver pair has no golden (and drops any it had)."""
+    table["not_reached"][key] = reason
+    table["pairs"].pop(key, None)
+    print(f"{key}: {reason}")
+
+
 def pair_key(scene: str, solver: str) -> str:
     return f"{scene}.{solver}"
 
@@ -433,25 +440,17 @@ def spread(scene: str, solvers: list, builds: list, binary: str | None, max_iter
                 base_run = run_scene(scene, work / "base", binary, None if own else solver, 1, arguments,
                                      timeout=timeout)
             except subprocess.TimeoutExpired:
-                reason = (f"does not converge within {timeout:g} s on one thread"
-                          f"{' (--max-iter ' + str(max_iterations) + ')' if max_iterations else ''}")
-                table["not_reached"][key] = reason
-                table["pairs"].pop(key, None)
-                print(f"{key}: {reason}")
+                not_reached(table, key, f"does not converge within {timeout:g} s on one thread"
+                                        f"{' (--max-iter ' + str(max_iterations) + ')' if max_iterations else ''}")
                 continue
             except Refused as refusal:
-                table["not_reached"][key] = f"refused: {refusal}"
-                table["pairs"].pop(key, None)
-                print(f"{key}: refused: {refusal}")
+                not_reached(table, key, f"refused: {refusal}")
                 continue
             seconds = time.monotonic() - started
             base = answer_of(base_run)
             if not base["converged"]:
-                reason = (f"does not converge: {base['termination']} after {base['iterations']} iterations "
-                          f"({seconds:.0f} s), ||V||inf = {base['residual_N']:.3g} N > e = {base['tolerance_N']:.3g} N")
-                table["not_reached"][key] = reason
-                table["pairs"].pop(key, None)
-                print(f"{key}: {reason}")
+                not_reached(table, key, f"does not converge: {base['termination']} after {base['iterations']} iterations "
+                                        f"({seconds:.0f} s), ||V||inf = {base['residual_N']:.3g} N > e = {base['tolerance_N']:.3g} N")
                 continue
             measured = dict(table["pairs"].get(key, {}).get("measured", {}))
             runs = [("threads 2", binary, 2, [])] if "threads" in variants else []

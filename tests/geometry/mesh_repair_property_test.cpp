@@ -24,6 +24,7 @@
 #include "fabform/geometry/mesh_report.hpp"
 #include "fabform/io/mesh_reader.hpp"
 #include "fabform/io/obj_text.hpp"
+#include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
@@ -110,17 +111,6 @@ double sampled_distance(const TriangleMesh& from, const TriangleMesh& to) {
   return worst;
 }
 
-// Each triangle's vertex cycle started at its smallest index: the same triangle, facing the
-// same way, whichever corner it is listed from.
-std::vector<std::array<int, 3>> cycles(const TriangleMesh& mesh) {
-  std::vector<std::array<int, 3>> out;
-  for (auto t : mesh.triangles) {
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    out.push_back(t);
-  }
-  return out;
-}
-
 void expect_same_report(const MeshReport& a, const MeshReport& b, const std::string& name) {
   EXPECT_EQ(a.vertices, b.vertices) << name;
   EXPECT_EQ(a.triangles, b.triangles) << name;
@@ -180,7 +170,7 @@ TEST(MeshRepairProperties, RepairingTwiceIsRepairingOnce) {
     const RepairResult twice = repair_mesh(once.mesh);
     EXPECT_FALSE(twice.changed()) << name << ": " << (twice.changes().empty() ? "" : twice.changes()[0]);
     EXPECT_EQ(twice.mesh.vertices, once.mesh.vertices) << name;
-    EXPECT_EQ(cycles(twice.mesh), cycles(once.mesh)) << name;
+    EXPECT_EQ(test::cycles(twice.mesh), test::cycles(once.mesh)) << name;
   }
 }
 

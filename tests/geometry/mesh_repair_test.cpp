@@ -18,20 +18,10 @@ namespace fabform {
 namespace {
 
 using test::cube;
+using test::cycles;
 using test::flip;
 using test::soup;
 using V = Eigen::Vector3d;
-
-// Each triangle's vertex cycle started at its smallest index: the same triangle, facing the
-// same way, whichever corner a writer starts from.
-std::vector<std::array<int, 3>> cycles(const TriangleMesh& mesh) {
-  std::vector<std::array<int, 3>> out;
-  for (auto t : mesh.triangles) {
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    out.push_back(t);
-  }
-  return out;
-}
 
 // What a repaired closed cube must be: 8 vertices, 12 triangles, closed, outward, clean.
 void expect_clean_cube(const TriangleMesh& mesh) {

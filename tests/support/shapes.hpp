@@ -1,8 +1,10 @@
 #pragma once
 // Analytic shapes for tests whose answers are known in closed form.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "fabform/geometry/triangle_mesh.hpp"
 
@@ -88,6 +90,17 @@ inline TriangleMesh soup(const TriangleMesh& mesh) {
     const int base = static_cast<int>(out.vertices.size());
     for (const int v : t) out.vertices.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
     out.triangles.push_back({base, base + 1, base + 2});
+  }
+  return out;
+}
+
+// Each triangle's vertex cycle started at its smallest index: the same triangle, facing the
+// same way, whichever corner a writer starts from.
+inline std::vector<std::array<int, 3>> cycles(const TriangleMesh& mesh) {
+  std::vector<std::array<int, 3>> out;
+  for (auto t : mesh.triangles) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    out.push_back(t);
   }
   return out;
 }
