@@ -77,4 +77,34 @@ double TensionTable::energy_density(double strain) const {
   return energy_from_first_point(strain) - energy_at_zero_;
 }
 
+void TensionTable::set_compression(Compression mode, double flexural_rigidity_Nm) {
+  compression_ = mode;
+  flexural_rigidity_Nm_ = flexural_rigidity_Nm;
+}
+
+CompressionLaw TensionTable::compression_law(double rest_length_m) const {
+  const TablePoint& a = points_[0];
+  const TablePoint& b = points_[1];
+  const double first_slope = (b.tension_N_per_m - a.tension_N_per_m) / (b.strain - a.strain);
+  return {tension_only_ ? compression_ : Compression::none, first_slope,
+          compression_ == Compression::buckling ? euler_buckling_tension(flexural_rigidity_Nm_, rest_length_m) : 0.0};
+}
+
+// Strain 0 itself belongs to the compression law when there is one: its slope there is k₀, not
+// the slack side's 0, so that newton sees the stiffness a spring at rest has.
+double TensionTable::tension(double strain, double rest_length_m) const {
+  if (strain > 0.0 || !tension_only_ || compression_ == Compression::none) return tension(strain);
+  return compression_law(rest_length_m).tension(strain);
+}
+
+double TensionTable::slope(double strain, double rest_length_m) const {
+  if (strain > 0.0 || !tension_only_ || compression_ == Compression::none) return slope(strain);
+  return compression_law(rest_length_m).slope(strain);
+}
+
+double TensionTable::energy_density(double strain, double rest_length_m) const {
+  if (strain > 0.0 || !tension_only_ || compression_ == Compression::none) return energy_density(strain);
+  return compression_law(rest_length_m).energy_density(strain);
+}
+
 }  // namespace fabform

@@ -15,6 +15,18 @@
 namespace fabform {
 namespace {
 
+// What a table gives in compression, said after its description ("" when it is slack there).
+std::string compression_said(const TensionTable& table) {
+  switch (table.compression()) {
+    case Compression::none: return "";
+    case Compression::linear: return ", in compression their first slope continued (fabric.compression = linear)";
+    case Compression::buckling:
+      return ", in compression their first slope up to Euler's buckling load pi^2 B / L^2, then the elastica's "
+             "post-buckling branch (fabric.compression = buckling)";
+  }
+  return "";
+}
+
 // The steepest segment of a table (N/m per unit strain); the slack range of a tension-only
 // table has slope 0, and the extended end segments keep their slopes.
 double steepest_slope(const TensionTable& table) {
@@ -47,10 +59,11 @@ std::string SpringTerm::describe(const Model& model) const {
                                       ? "rectangle"
                                       : "circle meshed " + std::string(to_string(fabric.spec().mesh));
       return "stretch: warp and weft springs of a " + outline + " of " + std::to_string(fabric.node_count()) +
-             " nodes, tension-only piecewise-linear tables";
+             " nodes, tension-only piecewise-linear tables" + compression_said(model.warp);
     }
     case Role::shear:
-      return "shear: diagonal springs (rest length the cell's diagonal) following " + model.table(SpringKind::shear).name();
+      return "shear: diagonal springs (rest length the cell's diagonal) following " + model.table(SpringKind::shear).name() +
+             compression_said(model.table(SpringKind::shear));
     case Role::bend: {
       char text[200];
       std::snprintf(text, sizeof text,

@@ -10,7 +10,7 @@ double path_strain(const EdgeWrap& wrap, const Spring& spring) { return wrap.len
 }  // namespace
 
 double wrapped_spring_energy(const EdgeWrap& wrap, const Spring& spring, const TensionTable& table) {
-  return spring.width * spring.rest_length * table.energy_density(path_strain(wrap, spring));
+  return spring.width * spring.rest_length * table.energy_density(path_strain(wrap, spring), spring.rest_length);
 }
 
 Eigen::Vector3d wrapped_spring_force(const Eigen::Vector3d& node, const EdgeWrap& wrap, const Spring& spring,
@@ -18,14 +18,14 @@ Eigen::Vector3d wrapped_spring_force(const Eigen::Vector3d& node, const EdgeWrap
   const Eigen::Vector3d to_edge = wrap.point - node;
   const double distance = to_edge.norm();
   if (distance == 0.0) return Eigen::Vector3d::Zero();
-  return (spring.width * table.tension(path_strain(wrap, spring)) / distance) * to_edge;
+  return (spring.width * table.tension(path_strain(wrap, spring), spring.rest_length) / distance) * to_edge;
 }
 
 Matrix6d wrapped_spring_hessian(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb, const EdgeWrap& wrap,
                                 const Spring& spring, const TensionTable& table, bool projected) {
   const double strain = path_strain(wrap, spring);
-  double tension = spring.width * table.tension(strain);                          // dE/dℓ
-  double slope = spring.width * table.slope(strain) / spring.rest_length;         // d²E/dℓ²
+  double tension = spring.width * table.tension(strain, spring.rest_length);                        // dE/dℓ
+  double slope = spring.width * table.slope(strain, spring.rest_length) / spring.rest_length;       // d²E/dℓ²
   if (projected) tension = std::max(tension, 0.0), slope = std::max(slope, 0.0);
   const double ra = (xa - wrap.point).norm(), rb = (xb - wrap.point).norm();
   Matrix6d hessian = Matrix6d::Zero();

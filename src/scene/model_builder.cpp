@@ -204,6 +204,20 @@ void add_bending(const Scene& scene, Model* model) {
   }
 }
 
+// [fabric] compression: what the in-plane springs' tension-only tables give below zero strain
+// (compression_response.hpp). A buckling spring bows along its own length, so it takes the
+// fabric's flexural rigidity (the hinges').
+void add_compression(const Scene& scene, Model* model) {
+  if (scene.compression == Compression::none) return;
+  const double rigidity = scene.bending.rigidity_Nm;
+  if (scene.compression == Compression::buckling && !(rigidity > 0.0))
+    throw InputError(scene.compression_where, "buckling needs the fabric's flexural rigidity: give it in [bending] "
+                                              "(rigidity_Nm, the hinges')");
+  model->warp.set_compression(scene.compression, rigidity);
+  model->weft.set_compression(scene.compression, rigidity);
+  if (model->shear) model->shear->set_compression(scene.compression, rigidity);
+}
+
 // The blank holder grips its nodes in z (locks) and resists their draw-in by friction; its creep
 // length is the one newton gives friction on bodies.
 void add_clamp(const Scene& scene, Model* model) {
@@ -312,6 +326,7 @@ Model build_model(const Scene& scene) {
   model.paths = build_paths(scene, model.bodies);
   add_shear(scene, &model);
   add_bending(scene, &model);
+  add_compression(scene, &model);
   add_gravity(scene, warp, weft, &model);
   add_wind(scene, &model);
   add_clamp(scene, &model);

@@ -146,6 +146,10 @@ void read_fabric(TableReader& r, Scene* scene) {
     if (!(*scene->locking_angle_deg > 0.0 && *scene->locking_angle_deg < 90.0))
       r.fail("locking_angle_deg", "must lie between 0 and 90 degrees");
   }
+  const std::string compression = r.text("compression", "none");
+  if (!parse_compression(compression, &scene->compression))
+    r.fail("compression", "must be one of none, linear, buckling (got '" + shown(compression) + "')");
+  scene->compression_where = r.locate_key("compression");
   if (shape == "rectangle")
     r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg"});
   else if (scene->fabric.mesh == FabricSpec::Mesh::arc)

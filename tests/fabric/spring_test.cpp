@@ -17,14 +17,25 @@ namespace fabform {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kPi = 3.14159265358979323846;
 
 struct TableCase {
   std::string label;
   TensionTable table;
 };
 
-std::vector<TableCase> tables() {
+// The swim warp (k₀ = 96.96 N/m) under a compression response; buckling with B chosen so that a
+// spring of rest length `rest` buckles at ε_b = −0.2, inside the band sampled below.
+TensionTable swim_warp_compressed(Compression mode, double rest) {
+  TensionTable table = read_material_table(test::source_path("materials/white-swim-solid_warp.csv"));
+  table.set_compression(mode, 0.2 * 96.96 * rest * rest / (kPi * kPi));
+  return table;
+}
+
+std::vector<TableCase> tables(double rest) {
   return {
+      {"swim warp, compression linear", swim_warp_compressed(Compression::linear, rest)},
+      {"swim warp, compression buckling", swim_warp_compressed(Compression::buckling, rest)},
       {"denim weft (real)",
        read_material_table(test::source_path("materials/11oz-black-denim_weft.csv"))},
       {"swim warp (real)",
@@ -40,10 +51,14 @@ std::vector<std::pair<double, double>> strain_bands(const TensionTable& t) {
           {0.01, t.max_strain() - 0.01}, {t.max_strain() + 0.01, t.max_strain() + 1.5}};
 }
 
-// True when a strain is within `band` of a kink of T (a table point, or 0 for a
-// tension-only table): the finite differences would straddle a jump of T' there.
-bool near_kink(const TensionTable& t, double strain, double band) {
+// True when a strain is within `band` of a kink of T (a table point, 0 for a tension-only table,
+// the buckling strain): the finite differences would straddle a jump of T' there.
+bool near_kink(const TensionTable& t, double rest, double strain, double band) {
   if (t.tension_only() && std::abs(strain) < band) return true;
+  const CompressionLaw law = t.compression_law(rest);
+  if (law.mode == Compression::buckling &&
+      std::abs(strain + law.buckling_tension_N_per_m / law.stiffness_N_per_m) < band)
+    return true;
   for (const auto& p : t.points())
     if (std::abs(strain - p.strain) < band) return true;
   return false;
@@ -66,7 +81,7 @@ TEST_P(SpringDerivatives, ForceAndStiffnessMatchFiniteDifferences) {
   // Step scaled to the rest length; strain moves by at most h/L = 1e-6 per step.
   const double h = 1e-6 * rest;
   int checked = 0;
-  for (const TableCase& tc : tables()) {
+  for (const TableCase& tc : tables(rest)) {
     SCOPED_TRACE(tc.label);
     const TensionTable& table = tc.table;
     const Spring spring{0, 1, rest, 0.37 * rest, SpringKind::warp};
@@ -74,7 +89,7 @@ TEST_P(SpringDerivatives, ForceAndStiffnessMatchFiniteDifferences) {
       if (lo < -0.95 || hi <= lo) continue;  // a band that would fold the spring through itself
       for (int sample = 0; sample < 60; ++sample) {
         const double strain = lo + (hi - lo) * unit(rng);
-        if (near_kink(table, strain, 10 * h / rest)) continue;
+        if (near_kink(table, rest, strain, 10 * h / rest)) continue;
         const Eigen::Vector3d xa = rest * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
         const Eigen::Vector3d xb = xa + rest * (1.0 + strain) * random_unit(rng);
         SCOPED_TRACE("strain " + std::to_string(strain));
@@ -98,15 +113,15 @@ TEST_P(SpringDerivatives, ForceAndStiffnessMatchFiniteDifferences) {
                               spring_force_on_a(xm, xb, spring, table)) / (2 * h);
         }
         // Force scale w·|T|; truncation is O((h/ℓ)²) relative, rounding ≈ ε·|E|/h.
-        const double force_scale = spring.width * std::abs(table.tension(strain));
+        const double force_scale = spring.width * std::abs(table.tension(strain, rest));
         const double force_tol = 1e-6 * force_scale + 64 * kEps * energy_scale / h + 1e-15;
         EXPECT_LE((force + gradient).norm(), force_tol)
             << "force " << force.transpose() << " vs -grad " << -gradient.transpose();
 
         // Stiffness scale w·(|T'|/L + |T|/ℓ); rounding of force differences ≈ ε·|f|/h.
         const double length = rest * (1.0 + strain);
-        const double k_scale = spring.width * (std::abs(table.slope(strain)) / rest +
-                                               std::abs(table.tension(strain)) / length);
+        const double k_scale = spring.width * (std::abs(table.slope(strain, rest)) / rest +
+                                               std::abs(table.tension(strain, rest)) / length);
         const double k_tol = 1e-6 * k_scale + 64 * kEps * force.norm() / h + 1e-15;
         EXPECT_LE((stiffness - jacobian).cwiseAbs().maxCoeff(), k_tol)
             << "K\n" << stiffness << "\nFD\n" << jacobian;
@@ -154,9 +169,9 @@ TEST(Spring, SlackSpringIsInert) {
 }
 
 TEST(Spring, CoincidentNodesGiveZeroForceAndNoNaN) {
-  for (const TableCase& tc : tables()) {
-    SCOPED_TRACE(tc.label);
-    for (const double rest : {1e-3, 1.0}) {
+  for (const double rest : {1e-3, 1.0}) {
+    for (const TableCase& tc : tables(rest)) {
+      SCOPED_TRACE(tc.label);
       const Spring spring{0, 1, rest, rest, SpringKind::warp};
       for (const Eigen::Vector3d& x : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.3, -1.2, 7.0)}) {
         EXPECT_EQ(spring_force_on_a(x, x, spring, tc.table), Eigen::Vector3d::Zero());

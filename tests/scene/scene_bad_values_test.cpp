@@ -79,6 +79,7 @@ Section fabric_section(Base base) {
                                  {"warp", "\"../materials/white-swim-solid_warp.csv\""},
                                  {"weft", "\"../materials/white-swim-solid_weft.csv\""},
                                  {"softening", "false"}, {"locking_angle_deg", "45.0"}});
+  outline.push_back({"compression", "\"linear\""});
   return {"fabric", "[fabric]", outline};
 }
 
@@ -268,6 +269,12 @@ const std::vector<KeyRow>& key_table() {
       {"fabric.softening",               T::only_extras, lift, _, _,  _,   _,   _,    "",
        {{"true", "true", A, kSame}, {"false", "false", A, kSame}, {"a_number", "1", R, kSame},
         {"a_string", "\"yes\"", R, kSame}}},
+      // Buckling needs the hinges' rigidity, which only the arc base has.
+      {"fabric.compression",             T::choice,    lift, A,   _,  _,   _,   R,    "",
+       {{"upper_case", "\"Linear\"", R, kSame}, {"none", "\"none\"", A, kSame},
+        {"buckling_without_hinges", "\"buckling\"", B, kSame}}},
+      {"fabric.compression",             T::only_extras, arc, _,  _,  _,   _,   _,    "",
+       {{"buckling_with_hinges", "\"buckling\"", A, kSame}}},
       {"body",                           T::table_array, lift, A, _,  _,   _,   _,    "", {}},
       {"body.0.name",                    T::text,      lift, A,   _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb\"", R, kSame}}},

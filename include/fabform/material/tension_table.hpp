@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "fabform/material/compression_response.hpp"
+
 namespace fabform {
 
 struct TablePoint {
@@ -27,6 +29,19 @@ class TensionTable {
   /// ∫₀^ε T dε (J/m²): the energy per unit rest area of a spring stretched to ε.
   double energy_density(double strain) const;
 
+  /// The same three for a spring of rest length L (m): a tension-only table's compression
+  /// response (set_compression) below zero strain, else exactly the table's own.
+  double tension(double strain, double rest_length_m) const;
+  double slope(double strain, double rest_length_m) const;
+  double energy_density(double strain, double rest_length_m) const;
+
+  /// What a tension-only table gives in compression (compression_response.hpp); B, the fabric's
+  /// flexural rigidity (N·m), sets the buckling load. A table with measured compression keeps it.
+  void set_compression(Compression mode, double flexural_rigidity_Nm = 0.0);
+  Compression compression() const { return compression_; }
+  /// The law a spring of rest length L follows below zero strain.
+  CompressionLaw compression_law(double rest_length_m) const;
+
   bool tension_only() const { return tension_only_; }
   /// Whether the table is extrapolated at this strain (a slack tension-only spring is not).
   bool beyond_range(double strain) const {
@@ -46,6 +61,8 @@ class TensionTable {
   double energy_at_zero_ = 0.0;
   std::string name_;
   bool tension_only_ = true;
+  Compression compression_ = Compression::none;
+  double flexural_rigidity_Nm_ = 0.0;
 };
 
 }  // namespace fabform

@@ -13,6 +13,7 @@
 #include "fabform/fabric/node_set.hpp"
 #include "fabform/geometry/placement.hpp"
 #include "fabform/geometry/tool_path.hpp"
+#include "fabform/material/compression_response.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/solver/solve.hpp"
 
@@ -124,6 +125,8 @@ struct Scene {
   SourceLocation weft_where;
   bool softening = false;  // [fabric] softening: tension tables may fall with strain, as meant
   std::optional<double> locking_angle_deg;  // [fabric]: where a cell locks, without a stiffening shear table
+  Compression compression = Compression::none;  // [fabric]: what tension-only tables give in compression
+  SourceLocation compression_where;
   std::vector<BodySpec> bodies;
   std::vector<ConstraintSpec> constraints;
   GravitySpec gravity;
