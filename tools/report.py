@@ -298,6 +298,19 @@ def peak_text(peak: dict) -> str:
     return f"{number(peak['strain'] * 100, 3)} % at node ({i}, {j}), ({x}, {y}, {z}) mm"
 
 
+def position_error_text(result: dict) -> str:
+    """The estimate of the largest node distance from the exact rest, how it was made, and the
+    distance tolerance when the run had one."""
+    how = {"newton_step": "the next Newton step",
+           "convergence_rate": "the last move and the rate ‖V‖∞ falls at (the moves still to come)"}
+    text = (f"{number(result.get('position_error_m'))} m, estimated from "
+            f"{how.get(result.get('position_error_estimate'), 'an unknown estimate')}")
+    if result.get("tolerance_m") is not None:
+        text += f" (tolerance {number(result['tolerance_m'])} m"
+        text += f"; stopped on {result['converged_on']})" if result.get("converged_on") else ")"
+    return text
+
+
 def summary_rows(result: dict) -> list:
     f = result.get("figures", {})
     flat, formed = f.get("area_flat_m2"), f.get("area_formed_m2")
@@ -307,6 +320,7 @@ def summary_rows(result: dict) -> list:
         ("iterations", result["iterations"]),
         ("residual ‖V‖∞", f"{number(result['residual_N'])} N (tolerance {number(result['tolerance_N'])} N; "
                           f"recomputed from positions {number(result['residual_recomputed_N'])} N)"),
+        ("distance from the rest", position_error_text(result)),
         ("time", f"{number(result['wall_seconds'], 3)} s in all, {number(result['solve_seconds'], 3)} s solving"),
         ("nodes", f"{result['nodes']} ({result['grid'][0]} × {result['grid'][1]})"),
         ("contact", f"{result['contact_nodes']} nodes, {number(f.get('contact_area_m2', 0) * 1e4)} cm²"),

@@ -8,8 +8,8 @@
 namespace {
 
 const char* kUsage =
-    "usage: fabform run SCENE [--out DIR] [--solver NAME] [--tol N] [--max-iter K]\n"
-    "                         [--threads T] [--set KEY=VALUE]... [--quiet]\n"
+    "usage: fabform run SCENE [--out DIR] [--solver NAME] [--tol N] [--tol-m METRES]\n"
+    "                         [--max-iter K] [--threads T] [--set KEY=VALUE]... [--unset KEY]... [--quiet]\n"
     "       fabform study STUDY.toml [--out DIR] [--jobs J] [--on local|slurm] [--threads-per-case T]\n"
     "                    [--partition P] [--time-limit MIN] [--mem-mb M] [--quiet]\n"
     "       fabform study --resume DIR [--jobs J] [--on local|slurm] ...\n"

@@ -43,6 +43,7 @@ struct RunArguments {
 // Flags that are shorthands for scene keys, so they are validated like the scene itself.
 const std::pair<const char*, const char*> kShorthands[] = {{"--solver", "solver.name"},
                                                            {"--tol", "solver.tolerance_N"},
+                                                           {"--tol-m", "solver.tolerance_m"},
                                                            {"--max-iter", "solver.max_iterations"},
                                                            {"--threads", "solver.threads"}};
 
@@ -184,7 +185,7 @@ int run(const RunArguments& args) {
     take_up_checkpoint(dir, model, *start.recorded, inputs, &state, &so_far);
     finished_steps = read_step_results(dir);
   }
-  so_far = begin_summary(scene.solver.name, scene.solver.tolerance_N(), std::move(so_far));
+  so_far = begin_summary(scene.solver.name, scene.solver.tolerance_N(), std::move(so_far), scene.solver.tolerance_m());
   std::fprintf(stderr, "fabform: scene %s, %d nodes, %zu bodies, solver %s, e = %g N%s\n",
                scene.name.c_str(), model.node_count(), model.bodies.size(),
                scene.solver.name.c_str(), scene.solver.tolerance_N(),
@@ -195,9 +196,10 @@ int run(const RunArguments& args) {
   const auto publish = [&](const SolverState& s, const Summary& summary) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m, scene.solver.tolerance_N());
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    write_results(dir, RunRecord{scene, model, s, summary, check, inputs,
-                                 collect_warnings(model, s, check, 1e-6, of_model), wall, scene.solver.threads,
-                                 &finished_steps});
+    std::vector<std::string> warnings = collect_warnings(model, s, check, 1e-6, of_model);
+    if (std::string w = position_tolerance_warning(summary); !w.empty()) warnings.push_back(std::move(w));
+    write_results(dir, RunRecord{scene, model, s, summary, check, inputs, std::move(warnings), wall,
+                                 scene.solver.threads, &finished_steps});
   };
   Progress progress(stderr);
   RunMonitor monitor(state, so_far, scene.checkpoint, publish, args.quiet ? nullptr : &progress);

@@ -165,6 +165,12 @@ std::string result_json(const RunRecord& run) {
   j["tolerance_relative"] = scale > 0.0 ? number(s.tolerance_N / scale) : nlohmann::json(nullptr);
   j["residual_relative"] = scale > 0.0 ? number(s.residual_N / scale) : nlohmann::json(nullptr);
   j["residual_recomputed_N"] = number(run.check.max_residual_N);
+  // How far the answer is from the exact rest, estimated (position_error.hpp), and which
+  // tolerance stopped a converged run.
+  j["position_error_m"] = number(s.position_error_m);
+  j["position_error_estimate"] = s.solver == "newton" ? "newton_step" : "convergence_rate";
+  j["tolerance_m"] = s.tolerance_m > 0.0 ? nlohmann::json(s.tolerance_m) : nlohmann::json(nullptr);
+  j["converged_on"] = s.converged() ? nlohmann::json(to_string(s.converged_on)) : nlohmann::json(nullptr);
   j["wall_seconds"] = run.wall_seconds;
   j["solve_seconds"] = s.seconds;
   j["nodes"] = run.model.node_count();

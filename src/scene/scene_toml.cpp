@@ -431,6 +431,12 @@ void read_solver(TableReader r, Scene* scene) {
   if (!known) r.fail("name", "unknown solver '" + shown(s.name) + "' (see `fabform solvers`)");
   s.set_tolerance_N(r.number("tolerance_N", s.relax.tolerance_N));
   read_relative_tolerance(r, &s);
+  if (r.has("tolerance_m")) {
+    const double tolerance_m = r.number("tolerance_m", 0.0);
+    if (!(std::isfinite(tolerance_m) && tolerance_m > 0.0))
+      r.fail("tolerance_m", "must be a positive, finite distance from the rest in metres");
+    s.set_tolerance_m(tolerance_m);
+  }
   if (r.has("max_iterations"))
     s.relax.max_iterations = s.newton.max_iterations = s.dynamic.max_iterations = checked_int(
         r, "max_iterations", r.integer("max_iterations", 0), 0, 1'000'000'000);
@@ -449,7 +455,7 @@ void read_solver(TableReader r, Scene* scene) {
   if (const std::string why = s.relax.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (const std::string why = s.newton.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (const std::string why = s.dynamic.invalid_reason(&field); !why.empty()) r.fail(field, why);
-  r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "max_iterations", "C", "regularization", "armijo",
+  r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "tolerance_m", "max_iterations", "C", "regularization", "armijo",
                     "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
                     "stretch_limit", "threads", "friction_creep"});
 }

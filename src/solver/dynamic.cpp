@@ -11,6 +11,7 @@
 
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/solver/contact_move.hpp"
+#include "fabform/solver/position_error.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -22,6 +23,8 @@ std::string DynamicOptions::invalid_reason(std::string* field) const {
   };
   if (!(std::isfinite(tolerance_N) && tolerance_N > 0.0))
     return bad("tolerance_N", "must be a positive, finite force");
+  if (!(std::isfinite(tolerance_m) && tolerance_m >= 0.0))
+    return bad("tolerance_m", "must be a positive, finite distance (or 0: none)");
   if (max_iterations < 0) return bad("max_iterations", "must not be negative");
   if (!(std::isfinite(areal_density_kg_m2) && areal_density_kg_m2 > 0.0))
     return bad("areal_density_kg_m2", "must be a positive, finite density");
@@ -230,8 +233,12 @@ Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& op
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Dynamics dynamics(model, state, options);
-  Summary summary = begin_summary("dynamic", options.tolerance_N, std::move(resumed));
+  Summary summary = begin_summary("dynamic", options.tolerance_N, std::move(resumed), options.tolerance_m);
   const double earlier_seconds = summary.seconds;
+  std::vector<Eigen::Vector3d> before;  // the positions before the last step
+  const auto distance = [&] {
+    return before.empty() ? std::nan("") : rate_position_error(summary.history, largest_move(before, state.x));
+  };
   for (int iteration = summary.iterations;; ++iteration) {
     // The forces at the state the last step reached give its residual and drive the next step.
     const std::vector<Eigen::Vector3d> forces = dynamics.forces();
@@ -240,8 +247,11 @@ Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& op
         earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
     const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
     if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
+    if (options.tolerance_m > 0.0 && record_position_error(summary, distance())) break;
+    before = state.x;
     dynamics.advance(forces);
   }
+  if (final_position_error_due(summary)) summary.position_error_m = distance();
   summary.message = stop_message(summary) + step_note(dynamics);
   return summary;
 }

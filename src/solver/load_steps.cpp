@@ -83,7 +83,7 @@ Summary solve_in_steps(Model& model, SolverState& state, const SolverSpec& spec,
                        const StepObserver& step_done, Summary resumed) {
   const int steps = model.load_steps();
   if (steps == 0) throw std::invalid_argument("solve_in_steps: no body travels");
-  Summary run = begin_summary(spec.name, spec.tolerance_N(), std::move(resumed));
+  Summary run = begin_summary(spec.name, spec.tolerance_N(), std::move(resumed), spec.tolerance_m());
   const int resumed_step = run.history.empty() ? 0 : run.history.back().step;
   // The bodies stand where the checkpoint's step put them; the state is already carried.
   for (std::size_t b = 0; b < model.paths.size() && resumed_step > 0; ++b)
@@ -104,6 +104,8 @@ Summary solve_in_steps(Model& model, SolverState& state, const SolverSpec& spec,
     run.worst_node = done.worst_node;
     run.seconds = done.seconds;
     run.termination = done.termination;
+    run.converged_on = done.converged_on;
+    run.position_error_m = done.position_error_m;
     run.message = step_message(step, steps, done);
     if (!done.converged()) return run;
     if (step_done) step_done(step, state, done);

@@ -10,6 +10,7 @@
 
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/solver/contact_move.hpp"
+#include "fabform/solver/position_error.hpp"
 #include "solver/free_directions.hpp"
 #include "solver/lagged_friction.hpp"
 #include "solver/reduced_hessian.hpp"
@@ -25,6 +26,8 @@ std::string NewtonOptions::invalid_reason(std::string* field) const {
   };
   if (!(std::isfinite(tolerance_N) && tolerance_N > 0.0))
     return bad("tolerance_N", "must be a positive, finite force");
+  if (!(std::isfinite(tolerance_m) && tolerance_m >= 0.0))
+    return bad("tolerance_m", "must be a positive, finite distance (or 0: none)");
   if (max_iterations < 0) return bad("max_iterations", "must not be negative");
   if (!(regularization > 0.0 && regularization <= 1.0))
     return bad("regularization", "must be in (0, 1]");
@@ -76,6 +79,14 @@ double first_order_change(const std::vector<Eigen::Vector3d>& forces,
   return change;
 }
 
+// The Newton step from a state: what the line search moves along, and the estimate of the
+// state's distance from the rest.
+struct Proposal {
+  std::vector<Eigen::Vector3d> forces;  // R at the state, lagged friction included
+  CoulombFriction friction;
+  std::vector<Eigen::Vector3d> steps;   // per node
+};
+
 class NewtonStep {
  public:
   NewtonStep(const Model& model, SolverState& state, const NewtonOptions& options)
@@ -85,19 +96,35 @@ class NewtonStep {
         creep_m_(model.has_friction() ? friction_creep_m(model.fabric, options.friction_creep) : 0.0),
         mu_(state.regularization > 0.0 ? state.regularization : options.regularization) {}
 
-  /// One Newton step from the current state, whose ‖V‖∞ is `residual`; false when no step along
-  /// the Newton direction is acceptable (the state is then unchanged).
-  bool take(double residual) {
+  /// The Newton step from the current state (nodes its force pulls off a body are released
+  /// first, as the step would); none when the matrix gives no descent direction.
+  std::optional<Proposal> propose() {
     const std::vector<Eigen::Vector3d> stored = node_forces(model_, state_.x);
     release_pulling_nodes(model_, stored, state_);
-    const CoulombFriction friction = lag_friction(model_, state_, stored, creep_m_);
-    const std::vector<Eigen::Vector3d> forces = with_friction(model_, stored, friction, state_.x);
+    Proposal p{{}, lag_friction(model_, state_, stored, creep_m_), {}};
+    p.forces = with_friction(model_, stored, p.friction, state_.x);
     const FreeDirections directions = free_directions(model_, state_.contact);
-    if (directions.used == 0) return false;
-    const auto step = solve(reduced_hessian(model_, state_.x, directions, friction.empty() ? nullptr : &friction),
-                            reduced_forces(directions, forces), directions.used);
-    if (!step) return false;
-    const auto alpha = line_search(node_steps(directions, *step), forces, friction, residual);
+    if (directions.used == 0) return std::nullopt;
+    const auto step = solve(reduced_hessian(model_, state_.x, directions, p.friction.empty() ? nullptr : &p.friction),
+                            reduced_forces(directions, p.forces), directions.used);
+    if (!step) return std::nullopt;
+    p.steps = node_steps(directions, *step);
+    return p;
+  }
+
+  /// The largest node move of the step from the current state, which it leaves as it is: the
+  /// estimate of its distance from the rest (NaN without a step).
+  double distance_to_rest() {
+    const std::vector<NodeContact> contact = state_.contact;
+    const std::optional<Proposal> p = propose();
+    state_.contact = contact;
+    return p ? largest_move(p->steps) : std::nan("");
+  }
+
+  /// Moves along the proposed step from the current state, whose ‖V‖∞ is `residual`; false when
+  /// no step along it is acceptable (the state is then unchanged).
+  bool take(const Proposal& p, double residual) {
+    const auto alpha = line_search(p.steps, p.forces, p.friction, residual);
     if (!alpha) return false;
     // Levenberg–Marquardt-like: a full step earns less regularisation, a short one more.
     if (*alpha == 1.0) mu_ = std::max(mu_ / 10.0, options_.regularization);
@@ -189,14 +216,22 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   NewtonStep step(model, state, options);
-  Summary summary = begin_summary("newton", options.tolerance_N, std::move(resumed));
+  Summary summary = begin_summary("newton", options.tolerance_N, std::move(resumed), options.tolerance_m);
   const int first = summary.iterations;
   const double earlier_seconds = summary.seconds;
   const auto elapsed = [&] {
     return earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
   };
   for (int iteration = first;; ++iteration) {
-    const bool stepped = iteration == first || step.take(summary.residual_N);
+    bool stepped = true;
+    if (iteration > first) {
+      // The step from the state last recorded measures its distance from the rest.
+      const std::optional<Proposal> proposal = step.propose();
+      const double distance = proposal ? largest_move(proposal->steps) : std::nan("");
+      if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) break;
+      stepped = proposal && step.take(*proposal, summary.residual_N);
+      if (!stepped) summary.position_error_m = distance;  // the state stays where it was measured
+    }
     const StateResidual m = measure_state(model, state);
     if (!stepped && std::isfinite(m.max_residual_N)) {  // a broken state is recorded below
       summary.termination = Termination::not_converged;
@@ -208,6 +243,9 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
     const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
     if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
   }
+  // One more factorisation, of the final state, without moving it.
+  if (final_position_error_due(summary)) summary.position_error_m = step.distance_to_rest();
+  summary.seconds = elapsed();
   summary.message = stop_message(summary);
   return summary;
 }

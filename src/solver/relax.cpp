@@ -10,6 +10,7 @@
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/model/spring_strains.hpp"
 #include "fabform/solver/contact_move.hpp"
+#include "fabform/solver/position_error.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -22,6 +23,8 @@ std::string RelaxOptions::invalid_reason(std::string* field) const {
   if (!(C > 1.0 && C <= 1e6)) return bad("C", "must be greater than 1 and at most 1e6");
   if (!(std::isfinite(tolerance_N) && tolerance_N > 0.0))
     return bad("tolerance_N", "must be a positive, finite force");
+  if (!(std::isfinite(tolerance_m) && tolerance_m >= 0.0))
+    return bad("tolerance_m", "must be a positive, finite distance (or 0: none)");
   if (max_iterations < 0) return bad("max_iterations", "must not be negative");
   if (!(min_step_fraction >= 1e-300 && min_step_fraction < 1.0))
     return bad("min_step_fraction", "must be in [1e-300, 1)");
@@ -128,17 +131,23 @@ Summary relax(const Model& model, SolverState& state, const RelaxOptions& option
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
   Relaxation relaxation(model, state, options);
-  Summary summary = begin_summary("relax", options.tolerance_N, std::move(resumed));
+  Summary summary = begin_summary("relax", options.tolerance_N, std::move(resumed), options.tolerance_m);
   const int first = summary.iterations;
   const double earlier_seconds = summary.seconds;
+  std::vector<Eigen::Vector3d> before;  // the positions before the last sweep
+  const auto distance = [&] {
+    return before.empty() ? std::nan("") : rate_position_error(summary.history, largest_move(before, state.x));
+  };
   for (int iteration = first;; ++iteration) {
-    if (iteration > first) relaxation.sweep();
+    if (iteration > first) before = state.x, relaxation.sweep();
     const StateResidual m = measure_state(model, state);
     const double seconds =
         earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
     const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
     if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
+    if (options.tolerance_m > 0.0 && record_position_error(summary, distance())) break;
   }
+  if (final_position_error_due(summary)) summary.position_error_m = distance();
   summary.message = stop_message(summary);
   return summary;
 }

@@ -1,5 +1,5 @@
 // Bad command-line flags and bad scene values, through the real binary (issue "Reliability",
-// item 1): every shorthand flag (--solver, --tol, --max-iter, --threads) and --set with bad
+// item 1): every shorthand flag (--solver, --tol, --tol-m, --max-iter, --threads) and --set with bad
 // values, unknown options, missing values, and a scene file with a bad value in each section.
 // Each run must fail while reading its input: exit status 2, exactly one line on standard error
 // starting "fabform: error:" and naming the key (with the scene file's line when the value is
@@ -117,6 +117,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadFlag{"TolWord", "--tol fast", "solver.tolerance_N: must be a number"},
         BadFlag{"TolBeyondDouble", "--tol 1e999", "solver.tolerance_N: not a usable number"},
         BadFlag{"TolMissingValue", "--tol", "--tol: needs a value"},
+        // --tol-m METRES = solver.tolerance_m
+        BadFlag{"TolMZero", "--tol-m 0", "solver.tolerance_m: must be a positive, finite distance"},
+        BadFlag{"TolMNegative", "--tol-m -1e-4", "solver.tolerance_m: must be a positive, finite distance"},
+        BadFlag{"TolMNaN", "--tol-m nan", "solver.tolerance_m: must be finite"},
+        BadFlag{"TolMWord", "--tol-m 1mm", "solver.tolerance_m: must be a number"},
+        BadFlag{"TolMMissingValue", "--tol-m", "--tol-m: needs a value"},
+        BadFlag{"SetTolMZero", "--set solver.tolerance_m=0", "solver.tolerance_m: must be a positive"},
         // --max-iter K = solver.max_iterations
         BadFlag{"MaxIterNegative", "--max-iter -1", "solver.max_iterations: must be between 0 and"},
         BadFlag{"MaxIterFraction", "--max-iter 1.5", "solver.max_iterations: must be an integer"},

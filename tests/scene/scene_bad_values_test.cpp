@@ -129,6 +129,7 @@ SceneText base_scene(Base base) {
            {"solver", "[solver]",
             {{"name", base == Base::arc ? "\"dynamic\"" : base == Base::circle ? "\"newton\"" : "\"relax\""},
              {"tolerance_N", "1e-3"},
+             {"tolerance_m", "1e-4"},
              {"max_iterations", "1000"},
              {"C", "2.0"},
              {"regularization", "1e-8"},
@@ -396,6 +397,9 @@ const std::vector<KeyRow>& key_table() {
       {"solver.tolerance_N",             T::number,    lift, A,   R,  R,   A,   _,    "", {}},
       // Exclusive with tolerance_N, which the base gives: checked in scene_toml_test.cpp.
       {"solver.tolerance_relative",      T::only_extras, lift, _, _,  _,   _,   _,    "", {}},
+      // A distance from the rest in metres: a loose one, like a loose e, is the user's to choose.
+      {"solver.tolerance_m",             T::number,    lift, A,   R,  R,   A,   _,    "",
+       {{"a_micrometre", "1e-6", A, kSame}}},
       {"solver.max_iterations",          T::integer,   lift, A,   R,  A,   R,   _,    "",
        {{"cap", "1_000_000_000", A, kSame}, {"beyond_cap", "1_000_000_001", R, kSame}}},
       {"solver.C",                       T::number,    lift, A,   R,  R,   R,   _,    "",

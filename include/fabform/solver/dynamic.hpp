@@ -20,6 +20,9 @@ namespace fabform {
 
 struct DynamicOptions {
   double tolerance_N = 1e-3;       // e > 0: stop when ‖V‖∞ ≤ e
+  // > 0: stop too when the distance from the rest is estimated within it (m), whichever of the
+  // two tolerances is met first (position_error.hpp); 0: e alone.
+  double tolerance_m = 0.0;
   int max_iterations = 10'000'000;  // cap on time steps
   // Inertia only: the rest does not depend on it. A typical fabric's 200 g/m². Used when the
   // model has no weight; with gravity the fabric's own density moves it.

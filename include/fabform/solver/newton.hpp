@@ -17,6 +17,9 @@ namespace fabform {
 
 struct NewtonOptions {
   double tolerance_N = 1e-3;  // e > 0: stop when ‖V‖∞ ≤ e
+  // > 0: stop too when the distance from the rest is estimated within it (m), whichever of the
+  // two tolerances is met first (position_error.hpp); 0: e alone.
+  double tolerance_m = 0.0;
   int max_iterations = 200;   // cap on Newton steps (a converging run takes tens)
   // μ added to the matrix's diagonal, relative to its mean diagonal entry: keeps it definite
   // where springs are slack (zero stiffness). Raised ×10 while the step is poor, lowered back.

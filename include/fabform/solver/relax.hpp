@@ -17,6 +17,9 @@ namespace fabform {
 struct RelaxOptions {
   double C = 2.0;               // seed 003's user constant: step divisor, in (1, 1e6]
   double tolerance_N = 1e-3;    // e > 0: stop when ‖V‖∞ ≤ e
+  // > 0: stop too when the distance from the rest is estimated within it (m), whichever of the
+  // two tolerances is met first (position_error.hpp); 0: e alone.
+  double tolerance_m = 0.0;
   int max_iterations = 100000;  // cap on sweeps over all nodes
   // A node gives up for this sweep once ξ has shrunk below this fraction of its first value.
   double min_step_fraction = 1e-14;

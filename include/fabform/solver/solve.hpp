@@ -27,11 +27,23 @@ struct SolverSpec {
     relax.tolerance_N = newton.tolerance_N = dynamic.tolerance_N = tolerance_N;
   }
 
+  /// Sets every solver's distance tolerance (m; 0: none).
+  void set_tolerance_m(double tolerance_m) {
+    relax.tolerance_m = newton.tolerance_m = dynamic.tolerance_m = tolerance_m;
+  }
+
   /// e of the solver the spec names.
   double tolerance_N() const {
     if (name == "newton") return newton.tolerance_N;
     if (name == "dynamic") return dynamic.tolerance_N;
     return relax.tolerance_N;
+  }
+
+  /// The distance tolerance of the solver the spec names (m; 0: none).
+  double tolerance_m() const {
+    if (name == "newton") return newton.tolerance_m;
+    if (name == "dynamic") return dynamic.tolerance_m;
+    return relax.tolerance_m;
   }
 };
 

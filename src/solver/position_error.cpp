@@ -1,0 +1,30 @@
+#include "fabform/solver/position_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fabform {
+
+double largest_move(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to) {
+  double largest = 0.0;
+  for (std::size_t i = 0; i < from.size(); ++i) largest = std::max(largest, (to[i] - from[i]).norm());
+  return largest;
+}
+
+double largest_move(const std::vector<Eigen::Vector3d>& moves) {
+  double largest = 0.0;
+  for (const Eigen::Vector3d& m : moves) largest = std::max(largest, m.norm());
+  return largest;
+}
+
+double rate_position_error(const std::vector<IterationRecord>& history, double last_move_m) {
+  if (history.size() < 3) return std::nan("");
+  const int window = std::min(kRateWindow, static_cast<int>(history.size() - 1) / 2);
+  const double now = history.back().residual_N;
+  const double before = history[history.size() - 1 - static_cast<std::size_t>(window)].residual_N;
+  if (!(now >= 0.0 && now < before)) return std::nan("");
+  const double rate = std::pow(now / before, 1.0 / window);
+  return last_move_m * rate / (1.0 - rate);
+}
+
+}  // namespace fabform
