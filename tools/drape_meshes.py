@@ -23,6 +23,8 @@ Usage (after tools/setup.sh, from anywhere):
   /usr/bin/python3 tools/drape_meshes.py --smoke         # the test suite's check: tiny meshes
   /usr/bin/python3 tools/drape_meshes.py --scene scenes/cusick.toml --divisions 40 --rings 20 --spokes 64 --levels 1,2,3
   /usr/bin/python3 tools/drape_meshes.py --rigidity 8.06e-5 --levels 1,2   # the pin with hinges
+  /usr/bin/python3 tools/drape_meshes.py --scene scenes/cusick.toml --divisions 40 --rings 20 --spokes 64 \
+      --set fabric.compression=buckling --set initial.perturbation_m=1e-4   # folds from the fabric
 Standard library only.
 """
 import argparse
@@ -125,6 +127,17 @@ def tables(rows, levels, meshes, scene_name):
             change = "%.2f" % (100 * abs(float(by_level[levels[-1]]["drape_coefficient"])
                                          - float(by_level[levels[-2]]["drape_coefficient"])))
         lines.append("| %s | %s | %s |" % (mesh, " | ".join(cells), change))
+    lines += ["", "Folds under refinement; last column: the largest difference between any two runs", "",
+              "| mesh | " + " | ".join("level %d" % L for L in levels) + " | spread |",
+              "|---|" + "---:|" * (len(levels) + 1)]
+    for mesh in meshes:
+        by_level = {r["level"]: r for r in rows if r["mesh"] == mesh}
+        cells = ["%d" % by_level[L]["folds"] if L in by_level else "-" for L in levels]
+        folds = [r["folds"] for r in by_level.values()]
+        lines.append("| %s | %s | %s |" % (mesh, " | ".join(cells), max(folds) - min(folds) if folds else "-"))
+    every = [r["folds"] for r in rows]
+    if every:
+        lines += ["", "Folds over every run: %d to %d" % (min(every), max(every))]
     return "\n".join(lines) + "\n"
 
 
@@ -139,6 +152,8 @@ def main(argv=None):
     parser.add_argument("--solver", default=None, help="override the scene's solver")
     parser.add_argument("--rigidity", type=float, default=None,
                         help="bend with hinges of this flexural rigidity (N·m) in place of the scene's [bending]")
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="passed to every run as fabform's --set (repeatable)")
     parser.add_argument("--out", default=str(ROOT / "results" / "drape_meshes"))
     parser.add_argument("--fabform", default=str(FABFORM), help="the fabform binary to run")
     parser.add_argument("--smoke", action="store_true", help="tiny meshes, levels 1 and 2")
@@ -150,6 +165,8 @@ def main(argv=None):
     out = pathlib.Path(args.out)
     (out / "scenes").mkdir(parents=True, exist_ok=True)
     extra = ["--solver", args.solver] if args.solver else []
+    for setting in args.set:
+        extra += ["--set", setting]
     if args.rigidity is not None and not (args.rigidity > 0 and re.search(r"^\s*\[bending\]", scene_text, re.M)):
         sys.exit("drape_meshes: --rigidity needs a positive value and a scene with a [bending] table")
     meshes = args.meshes.split(",")

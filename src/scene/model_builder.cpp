@@ -324,6 +324,7 @@ Model build_model(const Scene& scene) {
               build_start(scene, fabric)};
   model.read_warnings = std::move(read_warnings);
   model.paths = build_paths(scene, model.bodies);
+  perturb_start(scene.perturbation, model.locks, &model.start);  // after every lock is known
   add_shear(scene, &model);
   add_bending(scene, &model);
   add_compression(scene, &model);

@@ -383,6 +383,13 @@ void read_clamp(TableReader r, Scene* scene) {
   r.reject_unknown({"width_m", "nodes", "node", "nearest_m", "box_m", "force_N", "friction"});
 }
 
+// A seeded jitter of the start along z (start_perturbation.hpp), of any initial shape.
+void read_perturbation(TableReader& r, StartPerturbation* p) {
+  p->amplitude_m = r.number("perturbation_m", 0.0);
+  if (!(p->amplitude_m >= 0.0 && p->amplitude_m <= 0.1)) r.fail("perturbation_m", "must be in [0, 0.1] m");
+  p->seed = static_cast<std::uint64_t>(checked_int(r, "seed", r.integer("seed", 1), 0, 2147483647));
+}
+
 void read_initial(TableReader r, Scene* scene) {
   scene->initial_where = r.where();
   const std::string shape = r.text("shape", "flat");
@@ -400,7 +407,8 @@ void read_initial(TableReader r, Scene* scene) {
   }
   std::string field;
   if (const std::string why = s.invalid_reason(&field); !why.empty()) r.fail(field, why);
-  r.reject_unknown({"shape", "height_m", "axis_m", "radius_m", "facing_deg", "span_deg"});
+  read_perturbation(r, &scene->perturbation);
+  r.reject_unknown({"shape", "height_m", "axis_m", "radius_m", "facing_deg", "span_deg", "perturbation_m", "seed"});
 }
 
 // e in newtons or relative to the fabric's force scale: a scene gives one; a command line that

@@ -61,10 +61,11 @@ struct SceneText {
 };
 
 Section initial_section(Base base) {
-  if (base != Base::wrap) return {"initial", "[initial]", {{"shape", "\"lift\""}, {"height_m", "0.01"}}};
+  if (base != Base::wrap)
+    return {"initial", "[initial]", {{"shape", "\"lift\""}, {"height_m", "0.01"}, {"perturbation_m", "1e-4"}, {"seed", "7"}}};
   return {"initial", "[initial]",
           {{"shape", "\"wrap\""}, {"axis_m", "[0.05, 0.05]"}, {"radius_m", "0.05"},
-           {"facing_deg", "0.0"}, {"span_deg", "90.0"}}};
+           {"facing_deg", "0.0"}, {"span_deg", "90.0"}, {"perturbation_m", "1e-4"}, {"seed", "7"}}};
 }
 
 Section fabric_section(Base base) {
@@ -381,6 +382,10 @@ const std::vector<KeyRow>& key_table() {
        {{"upper_case", "\"Lift\"", R, kSame}, {"flat", "\"flat\"", A, kSame}, {"bump", "\"bump\"", A, kSame},
         {"wrap_without_its_keys", "\"wrap\"", R, "initial.axis_m"}}},
       {"initial.height_m",               T::number,    lift, R,   A,  R,   B,   _,    "initial", {}},
+      {"initial.perturbation_m",         T::number,    lift, A,   R,  A,   R,   _,    "",
+       {{"beyond_a_tenth", "0.2", R, kSame}}},
+      {"initial.seed",                   T::integer,   lift, A,   R,  A,   R,   _,    "",
+       {{"cap", "2147483647", A, kSame}, {"beyond_cap", "2147483648", R, kSame}}},
       {"initial.shape",                  T::only_extras, wrap, _, _,  _,   _,   _,    "",
        {{"lift_without_height", "\"lift\"", R, "initial.height_m"}}},
       {"initial.axis_m",                 T::vec2,      wrap, R,   A,  A,   B,   _,    "initial", {}},

@@ -11,6 +11,7 @@
 #include "fabform/fabric/fabric.hpp"
 #include "fabform/fabric/initial_shape.hpp"
 #include "fabform/fabric/node_set.hpp"
+#include "fabform/fabric/start_perturbation.hpp"
 #include "fabform/geometry/placement.hpp"
 #include "fabform/geometry/tool_path.hpp"
 #include "fabform/material/compression_response.hpp"
@@ -138,6 +139,7 @@ struct Scene {
   DrapeSpec drape;
   InitialShape initial;
   SourceLocation initial_where;
+  StartPerturbation perturbation;  // [initial] perturbation_m, seed: a seeded jitter of the start in z
   SolverSpec solver;
   SourceLocation tolerance_where;  // solver.tolerance_relative, for messages
   std::string output_dir;  // "" when the scene names none
