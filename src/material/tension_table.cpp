@@ -85,7 +85,8 @@ void TensionTable::set_compression(Compression mode, double flexural_rigidity_Nm
 CompressionLaw TensionTable::compression_law(double rest_length_m) const {
   const TablePoint& a = points_[0];
   const TablePoint& b = points_[1];
-  const double first_slope = (b.tension_N_per_m - a.tension_N_per_m) / (b.strain - a.strain);
+  // A first segment that falls (a softening table's) would push apart a compressed spring: 0.
+  const double first_slope = std::max((b.tension_N_per_m - a.tension_N_per_m) / (b.strain - a.strain), 0.0);
   return {tension_only_ ? compression_ : Compression::none, first_slope,
           compression_ == Compression::buckling ? euler_buckling_tension(flexural_rigidity_Nm_, rest_length_m) : 0.0};
 }

@@ -169,6 +169,15 @@ TEST(CompressionResponse, TableUsesTheLawOnlyInCompression) {
   EXPECT_DOUBLE_EQ(table.compression_law(2 * kRest).buckling_tension_N_per_m, 0.25 * l.buckling_tension_N_per_m);
 }
 
+// A first segment that falls (fabric.softening) has no stiffness to continue: k₀ = 0, so a
+// compressed spring is never pushed apart.
+TEST(CompressionResponse, FallingFirstSegmentGivesNothing) {
+  TensionTable table({{0.0, 0.0}, {0.1, -0.5}, {0.3, 4.0}}, "dips first");
+  table.set_compression(Compression::linear);
+  EXPECT_EQ(table.compression_law(kRest).stiffness_N_per_m, 0.0);
+  EXPECT_EQ(table.tension(-0.2, kRest), 0.0);
+}
+
 // A table that measured compression keeps its measurement whatever the scene asks.
 TEST(CompressionResponse, MeasuredCompressionIsKept) {
   const TensionTable plain({{-0.1, -2.0}, {0.1, 3.0}, {0.4, 12.0}}, "with compression");
