@@ -112,9 +112,9 @@ class NewtonStep {
     return p;
   }
 
-  /// The largest node move of the step from the current state, which it leaves as it is: the
-  /// estimate of its distance from the rest (NaN without a step).
-  double distance_to_rest() {
+  /// The largest node move of the step from the current state, which it leaves as it is (NaN
+  /// without a step).
+  double next_step_size() {
     const std::vector<NodeContact> contact = state_.contact;
     const std::optional<Proposal> p = propose();
     state_.contact = contact;
@@ -222,12 +222,14 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
   const auto elapsed = [&] {
     return earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
   };
+  std::vector<double> step_sizes;  // of the steps proposed from each state in turn
   for (int iteration = first;; ++iteration) {
     bool stepped = true;
     if (iteration > first) {
       // The step from the state last recorded measures its distance from the rest.
       const std::optional<Proposal> proposal = step.propose();
-      const double distance = proposal ? largest_move(proposal->steps) : std::nan("");
+      step_sizes.push_back(proposal ? largest_move(proposal->steps) : std::nan(""));
+      const double distance = newton_position_error(step_sizes);
       if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) break;
       stepped = proposal && step.take(*proposal, summary.residual_N);
       if (!stepped) summary.position_error_m = distance;  // the state stays where it was measured
@@ -244,7 +246,10 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
     if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
   }
   // One more factorisation, of the final state, without moving it.
-  if (final_position_error_due(summary)) summary.position_error_m = step.distance_to_rest();
+  if (final_position_error_due(summary)) {
+    step_sizes.push_back(step.next_step_size());
+    summary.position_error_m = newton_position_error(step_sizes);
+  }
   summary.seconds = elapsed();
   summary.message = stop_message(summary);
   return summary;

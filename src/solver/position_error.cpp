@@ -17,14 +17,32 @@ double largest_move(const std::vector<Eigen::Vector3d>& moves) {
   return largest;
 }
 
+namespace {
+
+// ρ, the factor a sequence falls by per entry from `before` to `now` over `entries`; NaN unless it falls.
+double falling_rate(double before, double now, int entries) {
+  if (!(now >= 0.0 && now < before)) return std::nan("");
+  return std::pow(now / before, 1.0 / entries);
+}
+
+}  // namespace
+
 double rate_position_error(const std::vector<IterationRecord>& history, double last_move_m) {
   if (history.size() < 3) return std::nan("");
   const int window = std::min(kRateWindow, static_cast<int>(history.size() - 1) / 2);
   const double now = history.back().residual_N;
   const double before = history[history.size() - 1 - static_cast<std::size_t>(window)].residual_N;
-  if (!(now >= 0.0 && now < before)) return std::nan("");
-  const double rate = std::pow(now / before, 1.0 / window);
+  const double rate = falling_rate(before, now, window);
   return last_move_m * rate / (1.0 - rate);
+}
+
+double newton_position_error(const std::vector<double>& step_sizes) {
+  if (step_sizes.empty()) return std::nan("");
+  const double now = step_sizes.back();
+  if (step_sizes.size() == 1) return now;
+  const int window = std::min(kNewtonRateWindow, static_cast<int>(step_sizes.size()) - 1);
+  const double rate = falling_rate(step_sizes[step_sizes.size() - 1 - static_cast<std::size_t>(window)], now, window);
+  return now / (1.0 - rate);
 }
 
 }  // namespace fabform

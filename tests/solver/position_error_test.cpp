@@ -108,6 +108,17 @@ TEST(RatePositionError, IsTheRestOfAGeometricSeries) {
   EXPECT_NEAR(rate_position_error(history, 1e-3), 9e-3, 1e-12);
 }
 
+// newton's steps in a linear tail, each half the last: the steps still to come sum to twice the
+// next one; one step alone is the estimate (the quadratic end, or a linear problem).
+TEST(NewtonPositionError, IsTheNextStepOverOneLessTheRate) {
+  std::vector<double> sizes;
+  for (int k = 0; k < 15; ++k) sizes.push_back(1e-3 * std::pow(0.5, k));
+  EXPECT_NEAR(newton_position_error(sizes), 2.0 * sizes.back(), 1e-15);
+  EXPECT_DOUBLE_EQ(newton_position_error({4e-6}), 4e-6);
+  EXPECT_TRUE(std::isnan(newton_position_error({})));
+  EXPECT_TRUE(std::isnan(newton_position_error({1e-6, 2e-6})));  // the steps grow: no figure
+}
+
 TEST(RatePositionError, HasNoFigureWithoutAFallingResidual) {
   std::vector<IterationRecord> history{{0, 1.0, 0.0, 0, 0}, {1, 0.5, 0.0, 0, 0}};
   EXPECT_TRUE(std::isnan(rate_position_error(history, 1e-3)));  // under two iterations of ρ
