@@ -352,6 +352,11 @@ def summary_rows(result: dict) -> list:
                                          f"({number(f['contact_pressure_max_mmHg'], 3)} mmHg), mean "
                                          f"{number(f['contact_pressure_mean_Pa'], 4)} Pa "
                                          f"({number(f['contact_pressure_mean_mmHg'], 3)} mmHg)"))
+    drape = result.get("drape")
+    if drape:
+        caveats = "; ".join(drape.get("caveats", []))
+        rows.append(("drape coefficient", f"{number(drape['coefficient'] * 100, 4)} %, {drape['folds']} folds"
+                                          + (f" — NOT a tester's reading: {caveats}" if caveats else "")))
     for direction in ("warp", "weft"):
         if f"max_{direction}_strain" in f:
             rows.append((f"largest {direction} strain", peak_text(f[f"max_{direction}_strain"])))

@@ -66,6 +66,7 @@ RunArguments parse_arguments(const std::vector<std::string>& args) {
     if (a == "--out") parsed.out = value();
     else if (a == "--resume") parsed.resume = value();
     else if (a == "--set") parsed.overrides.push_back(parse_override(value()));
+    else if (a == "--unset") parsed.overrides.push_back(parse_unset(value()));
     else if (a == "--quiet") parsed.quiet = true;
     else if (!a.empty() && a[0] == '-') throw usage_error(a, "unknown option");
     else if (parsed.scene.empty()) parsed.scene = a;

@@ -67,6 +67,8 @@ bool selected(const Fabric& fabric, const NodeSetSpec& spec, int node) {
   if (spec.kind == Kind::box) return in_box(fabric.rest_position(node).head<2>(), spec);
   // A node on the frame's inner line belongs to it, whatever the rounding of its position.
   if (spec.kind == Kind::frame) return depth_inside(fabric, node) <= spec.width_m * (1.0 + 1e-9);
+  if (spec.kind == Kind::disc)
+    return (fabric.rest_position(node).head<2>() - spec.point).norm() <= spec.width_m * (1.0 + 1e-9);
   return in_named_set(fabric, spec.kind, node);
 }
 

@@ -41,17 +41,30 @@ HingeStencil hinge_stencil(const Hinge& hinge) {
   return out;
 }
 
+double HingeBending::rigidity_of(const Model& model, const Hinge& hinge) const {
+  if (rigidity_warp_Nm_ == rigidity_weft_Nm_) return rigidity_warp_Nm_;
+  const Eigen::Vector2d e =
+      (model.fabric.rest_position(hinge.edge[1]) - model.fabric.rest_position(hinge.edge[0])).head<2>();
+  return (rigidity_warp_Nm_ * e.y() * e.y() + rigidity_weft_Nm_ * e.x() * e.x()) / e.squaredNorm();
+}
+
 std::string HingeBending::describe(const Model& model) const {
-  char text[200];
-  std::snprintf(text, sizeof text,
-                "bending: hinges across %zu face sides (quadratic bending of a flat fabric), flexural rigidity %.6g N·m",
-                model.fabric.hinges().size(), rigidity_Nm_);
+  char text[240];
+  if (rigidity_warp_Nm_ == rigidity_weft_Nm_)
+    std::snprintf(text, sizeof text,
+                  "bending: hinges across %zu face sides (quadratic bending of a flat fabric), flexural rigidity %.6g N·m",
+                  model.fabric.hinges().size(), rigidity_warp_Nm_);
+  else
+    std::snprintf(text, sizeof text,
+                  "bending: hinges across %zu face sides (quadratic bending of a flat fabric), flexural rigidity "
+                  "%.6g N·m along the warp, %.6g N·m along the weft",
+                  model.fabric.hinges().size(), rigidity_warp_Nm_, rigidity_weft_Nm_);
   return text;
 }
 
 double HingeBending::energy(const Model& model, const Positions& x) const {
   double energy = 0.0;
-  for (const Hinge& h : model.fabric.hinges()) energy += hinge_energy(h, rigidity_Nm_, x);
+  for (const Hinge& h : model.fabric.hinges()) energy += hinge_energy(h, rigidity_of(model, h), x);
   return energy;
 }
 
@@ -63,15 +76,17 @@ Eigen::Vector3d HingeBending::force_at(const Model& model, const Positions& x, i
     const HingeStencil stencil = hinge_stencil(h);
     const auto k = static_cast<std::size_t>(
         std::find(stencil.node.begin(), stencil.node.begin() + stencil.count, node) - stencil.node.begin());
-    force -= 2.0 * rigidity_Nm_ * h.shape_factor * stencil.weight[k] * bend_vector(h, x, node, at);
+    force -= 2.0 * rigidity_of(model, h) * h.shape_factor * stencil.weight[k] * bend_vector(h, x, node, at);
   }
   return force;
 }
 
 double HingeBending::node_energy(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const {
   double energy = 0.0;
-  for (const int i : model.fabric.hinges_at(node))
-    energy += hinge_energy(model.fabric.hinges()[static_cast<std::size_t>(i)], rigidity_Nm_, x, node, at);
+  for (const int i : model.fabric.hinges_at(node)) {
+    const Hinge& h = model.fabric.hinges()[static_cast<std::size_t>(i)];
+    energy += hinge_energy(h, rigidity_of(model, h), x, node, at);
+  }
   return energy;
 }
 
@@ -83,7 +98,7 @@ double HingeBending::node_energy_change(const Model& model, const Positions& x, 
 void HingeBending::add_stiffness(const Model& model, const Positions& /*x*/, StiffnessSink& sink) const {
   for (const Hinge& h : model.fabric.hinges()) {
     const HingeStencil stencil = hinge_stencil(h);
-    const double scale = 2.0 * rigidity_Nm_ * h.shape_factor;
+    const double scale = 2.0 * rigidity_of(model, h) * h.shape_factor;
     for (std::size_t r = 0; r < static_cast<std::size_t>(stencil.count); ++r)
       for (std::size_t c = 0; c <= r; ++c)
         sink.add(stencil.node[r], stencil.node[c],
@@ -98,7 +113,7 @@ void HingeBending::bound_stiffness(const Model& model, StiffnessBound& bound) co
     for (int k = 0; k < stencil.count; ++k) sum += std::abs(stencil.weight[static_cast<std::size_t>(k)]);
     for (int k = 0; k < stencil.count; ++k)
       bound.per_node[static_cast<std::size_t>(stencil.node[static_cast<std::size_t>(k)])] +=
-          rigidity_Nm_ * h.shape_factor * std::abs(stencil.weight[static_cast<std::size_t>(k)]) * sum;
+          rigidity_of(model, h) * h.shape_factor * std::abs(stencil.weight[static_cast<std::size_t>(k)]) * sum;
   }
 }
 

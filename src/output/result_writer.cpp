@@ -68,6 +68,19 @@ nlohmann::json fabric_json(const Fabric& fabric) {
           {"springs", springs}};
 }
 
+// Why a drape figure is not a tester's reading: the run stopped short of a rest, or the shadow
+// is smaller than the support, which no fabric hanging under its weight gives.
+nlohmann::json drape_caveats(const RunRecord& run, double coefficient) {
+  nlohmann::json caveats = nlohmann::json::array();
+  if (!run.summary.converged())
+    caveats.push_back("the run did not converge (" + to_string(run.summary.termination) +
+                      "): the figure is where the solver stopped, not a rest");
+  if (coefficient < 0.0)
+    caveats.push_back("negative: the shadow is smaller than the support, which no real drape gives; "
+                      "check the fabric's mass, bending and tables");
+  return caveats;
+}
+
 // A drape test's figures; null where the state has no shadow (a position not finite).
 nlohmann::json drape_json(const RunRecord& run) {
   const DrapeSpec& drape = run.scene.drape;
@@ -84,7 +97,8 @@ nlohmann::json drape_json(const RunRecord& run) {
             {"support", drape.support.empty() ? nlohmann::json("pin") : nlohmann::json(drape.support)},
             {"support_area_m2", f.support_area_m2},
             {"folds", f.folds},
-            {"shadow_pieces", f.shadow_pieces}};
+            {"shadow_pieces", f.shadow_pieces},
+            {"caveats", drape_caveats(run, f.coefficient)}};
   } catch (const std::invalid_argument&) {
     return nullptr;
   }
@@ -145,7 +159,8 @@ std::string result_json(const RunRecord& run) {
   j["scene_file"] = run.inputs.scene_file;
   j["scene_sha256"] = run.inputs.files.front().sha256;
   nlohmann::json overrides = nlohmann::json::array();
-  for (const SceneOverride& o : run.inputs.overrides) overrides.push_back({{"key", o.key}, {"value", o.value}});
+  for (const SceneOverride& o : run.inputs.overrides)
+    overrides.push_back(o.unset ? nlohmann::json{{"key", o.key}, {"unset", true}} : nlohmann::json{{"key", o.key}, {"value", o.value}});
   j["overrides"] = overrides;
   nlohmann::json inputs = nlohmann::json::array();
   for (const InputFile& f : run.inputs.files)

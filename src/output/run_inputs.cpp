@@ -32,7 +32,8 @@ RunInputs read_run_inputs(const std::string& result_json) {
     const nlohmann::json j = nlohmann::json::parse(in);
     RunInputs inputs;
     inputs.scene_file = j.at("scene_file").get<std::string>();
-    for (const auto& o : j.at("overrides")) inputs.overrides.push_back({o.at("key"), o.at("value")});
+    for (const auto& o : j.at("overrides"))
+      inputs.overrides.push_back(o.value("unset", false) ? parse_unset(o.at("key")) : SceneOverride{o.at("key"), o.at("value")});
     for (const auto& f : j.at("inputs")) inputs.files.push_back({f.at("role"), f.at("path"), f.at("sha256")});
     return inputs;
   } catch (const nlohmann::json::exception& error) {

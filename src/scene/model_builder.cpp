@@ -1,6 +1,8 @@
 #include "fabform/scene/model_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -14,6 +16,7 @@
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/pressure.hpp"
 #include "fabform/model/wind.hpp"
+#include "fabform/scene/fabric_plausibility.hpp"
 #include "fabform/scene/memory_budget.hpp"
 
 namespace fabform {
@@ -48,15 +51,12 @@ MaterialFile read_material(const Scene& scene, const std::string& path, const So
   return file;
 }
 
-// The fabric's mass per area, as its material files state it: one of them, or both alike.
-double areal_density(const Scene& scene, const MaterialFile& warp, const MaterialFile& weft) {
+// The fabric's mass per area as its material files state it (one of them, or both alike), or
+// as the scene does (fabric.areal_mass_g_m2), when it must agree with the files; none when
+// nothing says.
+std::optional<GivenValue> areal_mass(const Scene& scene, const MaterialFile& warp, const MaterialFile& weft) {
   const auto& a = warp.areal_density_kg_m2;
   const auto& b = weft.areal_density_kg_m2;
-  if (!a && !b)
-    throw InputError(scene.gravity.where,
-                     "gravity needs the fabric's mass per area: neither material file (" +
-                         scene.warp_path + ", " + scene.weft_path +
-                         ") has an 'areal_density_kg_m2,VALUE' line");
   // The same fabric written twice: the same decimal text reads as the same double.
   if (a && b && *a != *b) {
     char text[320];
@@ -64,7 +64,21 @@ double areal_density(const Scene& scene, const MaterialFile& warp, const Materia
                   *b, *a, scene.warp_path.c_str());
     throw InputError({scene.weft_path, weft.areal_density_line, ""}, text);
   }
-  return a ? *a : *b;
+  std::optional<GivenValue> files;
+  if (a) files = GivenValue{*a, {scene.warp_path, warp.areal_density_line, ""}};
+  else if (b) files = GivenValue{*b, {scene.weft_path, weft.areal_density_line, ""}};
+  if (!scene.areal_mass_kg_m2) return files;
+  // g/m² and kg/m² written for the same fabric differ by the decimal conversion's rounding only.
+  if (files && std::abs(files->value - *scene.areal_mass_kg_m2) > 1e-9 * files->value) {
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%.6g g/m² differs from the material file's %.6g g/m² (%s line %d: areal_density_kg_m2 %.6g): "
+                  "give the fabric's mass in one place",
+                  *scene.areal_mass_kg_m2 * 1e3, files->value * 1e3, files->where.file.c_str(), files->where.line,
+                  files->value);
+    throw InputError(scene.areal_mass_where, text);
+  }
+  return GivenValue{*scene.areal_mass_kg_m2, scene.areal_mass_where};
 }
 
 // Gravity needs something to hang from: a node held in z, or a body to rest on.
@@ -76,12 +90,17 @@ void require_support(const Scene& scene, const Model& model) {
                    "gravity with nothing to hold the fabric up: no node is held in z and the scene has no body");
 }
 
-void add_gravity(const Scene& scene, const MaterialFile& warp, const MaterialFile& weft, Model* model) {
+// The mass is the model's when gravity weighs it or the scene gives it; dynamic then moves it.
+void add_mass(const Scene& scene, const std::optional<GivenValue>& mass, Model* model) {
+  if (mass && (scene.gravity.on || scene.areal_mass_kg_m2)) model->areal_density_kg_m2 = mass->value;
   if (!scene.gravity.on) return;
   require_support(scene, *model);
-  const double density = areal_density(scene, warp, weft);
-  model->terms.push_back(std::make_shared<Gravity>(model->fabric, density, scene.gravity.acceleration_m_s2));
-  model->areal_density_kg_m2 = density;
+  if (!mass)
+    throw InputError(scene.gravity.where,
+                     "gravity needs the fabric's mass per area: give fabric.areal_mass_g_m2, or an "
+                     "'areal_density_kg_m2,VALUE' line in a material file (" + scene.warp_path + ", " +
+                         scene.weft_path + ")");
+  model->terms.push_back(std::make_shared<Gravity>(model->fabric, mass->value, scene.gravity.acceleration_m_s2));
 }
 
 RigidBody build_body(const BodySpec& spec, std::vector<std::string>* warnings) {
@@ -185,37 +204,105 @@ void check_clear_start(const Scene& scene, const Model& model) {
 }
 
 // Seed 004's shear springs follow the fabric's bias response, read like a warp or weft table;
-// the fabric has them, so the model has their term.
+// the fabric has them, so the model has their term. From a measured shear rigidity G they are
+// linear both ways with k = 2·G: a cell sheared by γ stretches one diagonal by γ/2 and shortens
+// the other as much, and the two, each standing for the cell's area A, store
+// 2·A·k·(γ/2)²/2 = A·G·γ²/2, the continuum's shear energy.
 void add_shear(const Scene& scene, Model* model) {
   if (!scene.shear.on) return;
+  if (scene.shear.rigidity_N_m > 0.0) {
+    const double k = 2.0 * scene.shear.rigidity_N_m;
+    model->shear = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "shear rigidity");
+    return;
+  }
   model->shear = read_material(scene, scene.shear.material_path, scene.shear.material_where).table;
+}
+
+// A cantilever's bending length c gives the rigidity B = m·g₀·c³ (BS 3356, ASTM D1388: the
+// strip's own weight m·g₀ per area bends it to the standard's angle), g₀ the standard gravity
+// the test was made under.
+Eigen::Vector2d hinge_rigidity(const Scene& scene, const std::optional<GivenValue>& mass) {
+  const BendingSpec& b = scene.bending;
+  if (b.bending_length_m.maxCoeff() <= 0.0) return b.rigidity_Nm;
+  if (!mass)
+    throw InputError(b.value_where, "a bending length gives the rigidity only with the fabric's mass (B = m·g·c³): "
+                                    "give fabric.areal_mass_g_m2, or an 'areal_density_kg_m2,VALUE' line in a "
+                                    "material file");
+  return mass->value * kStandardGravity_m_s2 * b.bending_length_m.array().cube().matrix();
 }
 
 // Bending: hinges with the fabric's flexural rigidity, or seed 004's bend springs (the fabric
 // has them, so the model has their term), which resist the shortening a fold brings as much as
-// stretching: a table linear through zero in both directions, T = k·ε per width.
-void add_bending(const Scene& scene, Model* model) {
-  if (!scene.bending.on) return;
-  if (scene.bending.rigidity_Nm > 0.0) {
-    model->terms.push_back(std::make_shared<HingeBending>(scene.bending.rigidity_Nm));
-  } else {
-    const double k = scene.bending.stiffness_N_m;
-    model->bend = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "bending");
+// stretching: a table linear through zero in both directions, T = k·ε per width. Returns the
+// hinges' rigidities along warp and weft (zero without hinges).
+Eigen::Vector2d add_bending(const Scene& scene, const std::optional<GivenValue>& mass, Model* model) {
+  if (!scene.bending.on) return Eigen::Vector2d::Zero();
+  if (scene.bending.hinges()) {
+    const Eigen::Vector2d rigidity = hinge_rigidity(scene, mass);
+    model->terms.push_back(std::make_shared<HingeBending>(rigidity.x(), rigidity.y()));
+    return rigidity;
   }
+  const double k = scene.bending.stiffness_N_m;
+  model->bend = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "bending");
+  return Eigen::Vector2d::Zero();
+}
+
+// A tester's clamp holds the specimen's centre between two discs: every node within its radius
+// is held where it starts, in x, y and z.
+void add_drape_clamp(const Scene& scene, Model* model) {
+  const DrapeSpec& d = scene.drape;
+  if (!d.on || d.clamp_radius_m <= 0.0) return;
+  NodeSetSpec disc;
+  disc.kind = NodeSetSpec::Kind::disc;
+  disc.point = Eigen::Vector2d::Constant(scene.fabric.radius_m());
+  disc.width_m = d.clamp_radius_m;
+  const std::vector<int> nodes = select_nodes(model->fabric, disc);
+  if (nodes.empty())
+    throw InputError(d.clamp_where, "the clamp holds no node of the " + fabric_name(model->fabric) + ": refine the mesh");
+  for (const int k : nodes) model->locks[static_cast<std::size_t>(k)] = kLockX | kLockY | kLockZ;
+}
+
+// A table's small-strain slope (N/m): of the first segment that carries tension.
+double small_strain_slope(const TensionTable& table) {
+  for (const TablePoint& p : table.points())
+    if (p.strain > 0.0 && table.tension(p.strain) > 0.0) return table.tension(p.strain) / p.strain;
+  return 0.0;
+}
+
+// What the plausibility check reads: each property as the model uses it, and where it was given.
+FabricValues fabric_values(const Scene& scene, const Model& model, const std::optional<GivenValue>& mass,
+                           const Eigen::Vector2d& rigidity) {
+  FabricValues v;
+  if (mass && (scene.gravity.on || scene.areal_mass_kg_m2)) v.areal_mass_kg_m2 = mass;
+  if (rigidity.maxCoeff() > 0.0) {
+    v.rigidity_warp_Nm = GivenValue{rigidity.x(), scene.bending.value_where};
+    v.rigidity_weft_Nm = GivenValue{rigidity.y(), scene.bending.value_where};
+  }
+  if (const double k = small_strain_slope(model.warp); k > 0.0) v.tensile_warp_N_m = GivenValue{k, {scene.warp_path, 0, ""}};
+  if (const double k = small_strain_slope(model.weft); k > 0.0) v.tensile_weft_N_m = GivenValue{k, {scene.weft_path, 0, ""}};
+  if (scene.shear.rigidity_N_m > 0.0) {
+    v.shear_rigidity_N_m = GivenValue{scene.shear.rigidity_N_m, scene.shear.rigidity_where};
+  } else if (model.shear) {
+    // A tension-only diagonal stretched by γ/2 stands for the cell alone: G = k/4 (add_shear).
+    const double k = small_strain_slope(*model.shear);
+    if (k > 0.0)
+      v.shear_rigidity_N_m = GivenValue{model.shear->tension_only() ? k / 4 : k / 2, {scene.shear.material_path, 0, ""}};
+  }
+  return v;
 }
 
 // [fabric] compression: what the in-plane springs' tension-only tables give below zero strain
-// (compression_response.hpp). A buckling spring bows along its own length, so it takes the
-// fabric's flexural rigidity (the hinges').
-void add_compression(const Scene& scene, Model* model) {
+// (compression_response.hpp). A buckling spring bows along its own length, so the warp's take
+// the warp's flexural rigidity, the weft's the weft's and the diagonals' their mean (the hinges'
+// B_warp·cos²ψ + B_weft·sin²ψ at ψ = 45°).
+void add_compression(const Scene& scene, const Eigen::Vector2d& rigidity, Model* model) {
   if (scene.compression == Compression::none) return;
-  const double rigidity = scene.bending.rigidity_Nm;
-  if (scene.compression == Compression::buckling && !(rigidity > 0.0))
+  if (scene.compression == Compression::buckling && !(rigidity.minCoeff() > 0.0))
     throw InputError(scene.compression_where, "buckling needs the fabric's flexural rigidity: give it in [bending] "
-                                              "(rigidity_Nm, the hinges')");
-  model->warp.set_compression(scene.compression, rigidity);
-  model->weft.set_compression(scene.compression, rigidity);
-  if (model->shear) model->shear->set_compression(scene.compression, rigidity);
+                                              "(rigidity_Nm or rigidity_uNm, the hinges')");
+  model->warp.set_compression(scene.compression, rigidity.x());
+  model->weft.set_compression(scene.compression, rigidity.y());
+  if (model->shear) model->shear->set_compression(scene.compression, rigidity.mean());
 }
 
 // The blank holder grips its nodes in z (locks) and resists their draw-in by friction; its creep
@@ -324,16 +411,20 @@ Model build_model(const Scene& scene) {
               build_start(scene, fabric)};
   model.read_warnings = std::move(read_warnings);
   model.paths = build_paths(scene, model.bodies);
+  add_drape_clamp(scene, &model);
   perturb_start(scene.perturbation, model.locks, &model.start);  // after every lock is known
+  const std::optional<GivenValue> mass = areal_mass(scene, warp, weft);
   add_shear(scene, &model);
-  add_bending(scene, &model);
-  add_compression(scene, &model);
-  add_gravity(scene, warp, weft, &model);
+  const Eigen::Vector2d rigidity = add_bending(scene, mass, &model);
+  add_compression(scene, rigidity, &model);
+  add_mass(scene, mass, &model);
   add_wind(scene, &model);
   add_clamp(scene, &model);
   add_pressure(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);
+  for (std::string& w : plausibility_warnings(fabric_values(scene, model, mass, rigidity)))
+    model.read_warnings.push_back(std::move(w));
   return model;
 }
 

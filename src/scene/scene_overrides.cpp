@@ -115,6 +115,10 @@ void apply_override(toml::table& root, const SceneOverride& o, OverriddenKeys* c
       throw InputError({kOverrideSource, 0, shown(o.key)},
                        "key parts are bare keys: letters, digits, _ and - (e.g. body.0.scale)");
   toml::table& target = parent_table(root, parts, o.key, created);
+  if (o.unset) {
+    if (!target.erase(parts.back())) throw InputError({kOverrideSource, 0, shown(o.key)}, "--unset: the scene has no such key");
+    return;
+  }
   toml::table value = parse_override_value(o);
   value.get("v")->visit([&](auto& node) { target.insert_or_assign(parts.back(), node); });
 }
@@ -126,6 +130,12 @@ SceneOverride parse_override(const std::string& argument) {
   if (equals == std::string::npos || equals == 0)
     throw InputError({kOverrideSource, 0, shown(argument)}, "expected KEY=VALUE");
   return {argument.substr(0, equals), argument.substr(equals + 1)};
+}
+
+SceneOverride parse_unset(const std::string& key) {
+  if (key.empty() || key.find('=') != std::string::npos)
+    throw InputError({kOverrideSource, 0, shown(key)}, "--unset takes a dotted key alone (e.g. bending.rigidity_Nm)");
+  return {key, "", true};
 }
 
 OverriddenKeys apply_overrides(toml::table& root, const std::vector<SceneOverride>& overrides) {

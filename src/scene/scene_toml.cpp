@@ -141,6 +141,12 @@ void read_fabric(TableReader& r, Scene* scene) {
   scene->weft_path = resolve(scene->path, plain_text(r, "weft", "", true));
   scene->weft_where = r.locate_key("weft");
   scene->softening = r.flag("softening", false);
+  if (r.has("areal_mass_g_m2")) {
+    const double grams = r.number("areal_mass_g_m2", 0.0);
+    if (!(grams > 0.0 && grams <= 1e5)) r.fail("areal_mass_g_m2", "must be in (0, 1e5] g/m²");
+    scene->areal_mass_kg_m2 = grams * 1e-3;
+    scene->areal_mass_where = r.locate_key("areal_mass_g_m2");
+  }
   if (r.has("locking_angle_deg")) {
     scene->locking_angle_deg = r.number("locking_angle_deg", 45.0);
     if (!(*scene->locking_angle_deg > 0.0 && *scene->locking_angle_deg < 90.0))
@@ -151,39 +157,80 @@ void read_fabric(TableReader& r, Scene* scene) {
     r.fail("compression", "must be one of none, linear, buckling (got '" + shown(compression) + "')");
   scene->compression_where = r.locate_key("compression");
   if (shape == "rectangle")
-    r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg"});
+    r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
+                     "areal_mass_g_m2"});
   else if (scene->fabric.mesh == FabricSpec::Mesh::arc)
-    r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft", "softening", "locking_angle_deg"});
+    r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
+                     "areal_mass_g_m2"});
   else
-    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg"});
+    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
+                     "areal_mass_g_m2"});
 }
 
+// KES-FB1 gives G in gf/(cm·degree); fabform works in N/m per radian.
+constexpr double kNewtonsPerGramForce = 9.80665e-3;
+constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
+// The diagonal springs follow a bias table (material) or a measured shear rigidity; one of them.
 void read_shear(TableReader r, Scene* scene) {
   ShearSpec& s = scene->shear;
   s.on = true;
-  s.material_path = resolve(scene->path, plain_text(r, "material", "", true));
-  s.material_where = r.locate_key("material");
+  const int given = int(r.has("material")) + int(r.has("rigidity_N_m")) + int(r.has("rigidity_gf_cm_deg"));
+  if (given != 1)
+    throw InputError(r.where(), "give one of material (a bias tension table), rigidity_N_m (G, N/m per radian, "
+                                "as FAST gives it) or rigidity_gf_cm_deg (G as KES-FB1 gives it)");
+  if (r.has("material")) {
+    s.material_path = resolve(scene->path, plain_text(r, "material", "", true));
+    s.material_where = r.locate_key("material");
+  } else {
+    const std::string key = r.has("rigidity_N_m") ? "rigidity_N_m" : "rigidity_gf_cm_deg";
+    const double value = r.number(key, 0.0, true);
+    s.rigidity_N_m = key == "rigidity_N_m" ? value : value * kNewtonsPerGramForce / 0.01 / kRadiansPerDegree;
+    if (!(s.rigidity_N_m > 0.0 && s.rigidity_N_m <= 1e9)) r.fail(key, "must be positive, at most 1e9 N/m");
+    s.rigidity_where = r.locate_key(key);
+  }
   scene->fabric.shear_springs = true;
-  r.reject_unknown({"material"});
+  r.reject_unknown({"material", "rigidity_N_m", "rigidity_gf_cm_deg"});
 }
 
+// Hinges take the rigidity in N·m or µN·m, or the cantilever's bending length in cm, each a
+// number or [warp, weft]; seed 004's bend springs a stiffness. One of the four.
 void read_bending(TableReader r, Scene* scene) {
   BendingSpec& b = scene->bending;
   b.on = true;
   b.where = r.where();
-  if (r.has("stiffness_N_m") == r.has("rigidity_Nm"))
-    throw InputError(b.where, "give one of stiffness_N_m (seed 004's bend springs) or rigidity_Nm "
-                              "(hinges with the fabric's flexural rigidity)");
-  if (r.has("stiffness_N_m")) {
+  const std::vector<std::string> keys = {"stiffness_N_m", "rigidity_Nm", "rigidity_uNm", "bending_length_cm"};
+  std::string key;
+  for (const std::string& k : keys)
+    if (r.has(k)) {
+      if (!key.empty())
+        throw InputError(b.where, "give one of stiffness_N_m (seed 004's bend springs), rigidity_Nm or rigidity_uNm "
+                                  "(hinges with the fabric's flexural rigidity) or bending_length_cm (a cantilever "
+                                  "test's), not " + key + " and " + k);
+      key = k;
+    }
+  if (key.empty())
+    throw InputError(b.where, "give one of stiffness_N_m (seed 004's bend springs), rigidity_Nm or rigidity_uNm "
+                              "(hinges with the fabric's flexural rigidity) or bending_length_cm (a cantilever test's)");
+  b.value_where = r.locate_key(key);
+  if (key == "stiffness_N_m") {
     b.stiffness_N_m = r.number("stiffness_N_m", 0.0, true);
     if (!(b.stiffness_N_m > 0.0 && b.stiffness_N_m <= 1e9)) r.fail("stiffness_N_m", "must be in (0, 1e9] N/m");
     scene->fabric.bend_springs = true;
+  } else if (key == "bending_length_cm") {
+    const Eigen::Vector2d c = r.number_or_pair(key);
+    if (!(c.minCoeff() > 0.0 && c.maxCoeff() <= 1e3)) r.fail(key, "must be in (0, 1000] cm");
+    b.bending_length_m = 0.01 * c;
+    scene->fabric.hinges = true;
   } else {
-    b.rigidity_Nm = r.number("rigidity_Nm", 0.0, true);
-    if (!(b.rigidity_Nm > 0.0 && b.rigidity_Nm <= 1e3)) r.fail("rigidity_Nm", "must be in (0, 1e3] N·m");
+    const bool micro = key == "rigidity_uNm";
+    const Eigen::Vector2d value = r.number_or_pair(key);
+    if (!(value.minCoeff() > 0.0 && value.maxCoeff() <= (micro ? 1e9 : 1e3)))
+      r.fail(key, micro ? "must be in (0, 1e9] µN·m" : "must be in (0, 1e3] N·m");
+    b.rigidity_Nm = micro ? 1e-6 * value : value;
     scene->fabric.hinges = true;
   }
-  r.reject_unknown({"stiffness_N_m", "rigidity_Nm"});
+  r.reject_unknown(keys);
 }
 
 void read_wind(TableReader r, Scene* scene) {
@@ -218,7 +265,15 @@ void read_drape(TableReader r, Scene* scene) {
   d.support_where = r.locate_key("support");
   if (scene->fabric.shape != FabricSpec::Shape::circle)
     throw InputError(d.where, "a drape test needs a circular fabric ([fabric] shape = \"circle\")");
-  r.reject_unknown({"support"});
+  if (r.has("clamp_radius_m")) {
+    d.clamp_radius_m = r.number("clamp_radius_m", 0.0);
+    d.clamp_where = r.locate_key("clamp_radius_m");
+    if (!(d.clamp_radius_m > 0.0)) r.fail("clamp_radius_m", "must be positive");
+    if (d.clamp_radius_m >= scene->fabric.radius_m())
+      r.fail("clamp_radius_m", "is " + number_text(d.clamp_radius_m) + " m, not smaller than the specimen's radius " +
+                                   number_text(scene->fabric.radius_m()) + " m: nothing would hang");
+  }
+  r.reject_unknown({"support", "clamp_radius_m"});
 }
 
 // [body.path]: the body's travel in load steps.
@@ -455,6 +510,12 @@ void read_solver(TableReader r, Scene* scene) {
       r, "max_backtracks", r.integer("max_backtracks", s.newton.max_backtracks), 1, 200);
   s.newton.friction_creep = r.number("friction_creep", s.newton.friction_creep);
   s.dynamic.areal_density_kg_m2 = r.number("areal_density_kg_m2", s.dynamic.areal_density_kg_m2);
+  // Only a fabric without a mass of its own moves with this one; one that has a mass would
+  // ignore it without a word.
+  if (r.has("areal_density_kg_m2") && (scene->gravity.on || scene->areal_mass_kg_m2))
+    r.fail("areal_density_kg_m2", std::string("is dynamic's mass for a fabric that has none; this fabric's comes from ") +
+                                      (scene->areal_mass_kg_m2 ? "fabric.areal_mass_g_m2" : "its material files, as its weight does") +
+                                      ": set it there");
   if (r.has("damping")) s.dynamic.damping = r.number("damping", 0.0);
   s.dynamic.time_step_fraction = r.number("time_step_fraction", s.dynamic.time_step_fraction);
   s.dynamic.stretch_limit = r.number("stretch_limit", s.dynamic.stretch_limit);

@@ -135,6 +135,17 @@ class TableReader {
     return v;
   }
 
+  /// A value that may differ along warp and weft: a number (the same both ways) or [warp, weft].
+  Eigen::Vector2d number_or_pair(const std::string& key) {
+    const toml::node* n = take(key);
+    if (!n) fail(key, "missing (a number, or an array [warp, weft], is required)");
+    if (n->is_array()) return read_vector<2>(*n, key);
+    const auto value = n->value<double>();
+    if (!value || n->is_boolean()) fail(key, "must be a number or an array [warp, weft] of two numbers");
+    if (!std::isfinite(*value)) fail(key, "must be finite");
+    return Eigen::Vector2d::Constant(*value);
+  }
+
   std::pair<long long, long long> integer_pair(const std::string& key, bool required) {
     const toml::node* n = take(key);
     if (!n) {

@@ -172,9 +172,16 @@ INSTANTIATE_TEST_SUITE_P(
     Contract, RunCommandBadDrape,
     ::testing::Values(
         BadDrape{"CircleSmallerThanTheDisc", "cusick",
-                 "--set fabric.diameter_m=0.15 --set fabric.origin_m=[-0.075,-0.075,0.002] "
-                 "--set constraint.0.nearest_m=[0.075,0.075]",
+                 "--set fabric.diameter_m=0.15 --set fabric.origin_m=[-0.075,-0.075,0.0005] "
+                 "--set drape.clamp_radius_m=0.05",
                  "the 0.15 m circle does not cover body 'disc'"},
+        BadDrape{"ClampAsWideAsTheSpecimen", "cusick", "--set drape.clamp_radius_m=0.15",
+                 "drape.clamp_radius_m: is 0.15 m, not smaller than the specimen's radius 0.15 m"},
+        BadDrape{"BendingLengthOfZero", "cusick", "--unset bending.rigidity_uNm --set bending.bending_length_cm=0",
+                 "bending.bending_length_cm: must be in (0, 1000] cm"},
+        BadDrape{"MassThatIsNotTheTables", "cusick", "--set fabric.areal_mass_g_m2=192",
+                 "fabric.areal_mass_g_m2: 192 g/m² differs from the material file's 204 g/m²"},
+        BadDrape{"UnsetOfNoKey", "cusick", "--unset bending.rigidity_Nm", "bending.rigidity_Nm: --unset: the scene has no such key"},
         BadDrape{"CircleOffTheDisc", "cusick", "--set fabric.origin_m=[0.0,0.0,0.002]", "does not cover body 'disc'"},
         BadDrape{"PinOutsideTheFabric", "pin", "--set constraint.0.nearest_m=[0.29,0.29]",
                  "--set: constraint.0.nearest_m: must lie on the fabric: within 0.15 m of its centre"},

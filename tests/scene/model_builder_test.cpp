@@ -219,7 +219,7 @@ TEST_F(ModelBuilder, NoGravityNoLoads) {
 TEST_F(ModelBuilder, GravityWithoutADensityIsBlamedOnTheGravityTable) {
   const InputError e = error(scene("[gravity]\n"));
   EXPECT_EQ(e.where().line, 12) << e.what();
-  EXPECT_NE(std::string(e.what()).find("neither material file"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("gravity needs the fabric's mass per area: give fabric.areal_mass_g_m2"), std::string::npos) << e.what();
   EXPECT_NE(std::string(e.what()).find("areal_density_kg_m2"), std::string::npos) << e.what();
 }
 

@@ -79,7 +79,8 @@ Section fabric_section(Base base) {
   outline.insert(outline.end(), {{"origin_m", "[0.0, 0.0, 0.05]"},
                                  {"warp", "\"../materials/white-swim-solid_warp.csv\""},
                                  {"weft", "\"../materials/white-swim-solid_weft.csv\""},
-                                 {"softening", "false"}, {"locking_angle_deg", "45.0"}});
+                                 {"softening", "false"}, {"locking_angle_deg", "45.0"},
+                                 {"areal_mass_g_m2", "204.0"}});  // the tables' own 0.204 kg/m²
   outline.push_back({"compression", "\"linear\""});
   return {"fabric", "[fabric]", outline};
 }
@@ -99,7 +100,10 @@ std::vector<Section> drape_sections(Base base) {
   else
     sections.insert(sections.end(), {{"bending", "[bending]", {{"rigidity_Nm", "5e-5"}}},
                                      {"wind", "[wind]", {{"velocity_m_s", "[1.0, 0.0, -0.5]"}, {"coefficient_N_s_m3", "0.5"}}}});
-  sections.push_back({"drape", "[drape]", {{"support", "\"dome\""}}});
+  if (base == Base::circle)
+    sections.push_back({"drape", "[drape]", {{"support", "\"dome\""}, {"clamp_radius_m", "0.02"}}});
+  else
+    sections.push_back({"drape", "[drape]", {{"support", "\"dome\""}}});
   return sections;
 }
 
@@ -137,7 +141,6 @@ SceneText base_scene(Base base) {
              {"armijo", "1e-4"},
              {"max_backtracks", "60"},
              {"friction_creep", "1e-3"},
-             {"areal_density_kg_m2", "0.2"},
              {"damping", "0.05"},
              {"time_step_fraction", "0.9"},
              {"stretch_limit", "0.0"},
@@ -146,7 +149,13 @@ SceneText base_scene(Base base) {
             {{"dir", "\"out\""}, {"checkpoint_every_iterations", "100"}, {"checkpoint_every_minutes", "10.0"}}}}};
   const auto gravity = std::find_if(scene.sections.begin(), scene.sections.end(),
                                     [](const Section& s) { return s.name == "gravity"; });
-  const std::vector<Section> drape = drape_sections(base);
+  std::vector<Section> drape = drape_sections(base);
+  // The rectangles' shear rigidity and bending in a lab's units: G as FAST and as KES give it,
+  // rigidity as a bending length and in µN·m.
+  if (base == Base::lift)
+    drape = {{"shear", "[shear]", {{"rigidity_N_m", "40.0"}}}, {"bending", "[bending]", {{"bending_length_cm", "2.0"}}}};
+  if (base == Base::wrap)
+    drape = {{"shear", "[shear]", {{"rigidity_gf_cm_deg", "0.8"}}}, {"bending", "[bending]", {{"rigidity_uNm", "7.0"}}}};
   scene.sections.insert(gravity + 1, drape.begin(), drape.end());
   // Springs wrap the dome's facets' edges, but not in dynamic (the arc's solver), which refuses them.
   if (base != Base::arc) scene.sections[2].entries.push_back({"wrap_edges_deg", "30.0"});
@@ -266,15 +275,20 @@ const std::vector<KeyRow>& key_table() {
        {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
       {"fabric.weft",                    T::text,      lift, R,   _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
+      // The tables' 0.204 kg/m² in g/m²: another mass conflicts with them.
+      {"fabric.areal_mass_g_m2",         T::number,    lift, A,   R,  R,   R,   _,    "",
+       {{"cap", "1e5", B, kSame}, {"beyond_cap", "1.1e5", R, kSame}, {"another_mass", "192.0", B, kSame}}},
       {"fabric.locking_angle_deg",       T::number,    lift, A,   R,  R,   R,   _,    "",
        {{"ninety", "90.0", R, kSame}, {"thirty", "30.0", A, kSame}}},
       {"fabric.softening",               T::only_extras, lift, _, _,  _,   _,   _,    "",
        {{"true", "true", A, kSame}, {"false", "false", A, kSame}, {"a_number", "1", R, kSame},
         {"a_string", "\"yes\"", R, kSame}}},
-      // Buckling needs the hinges' rigidity, which only the arc base has.
+      // Buckling needs the hinges' rigidity, which the circle's bend springs do not give.
       {"fabric.compression",             T::choice,    lift, A,   _,  _,   _,   R,    "",
        {{"upper_case", "\"Linear\"", R, kSame}, {"none", "\"none\"", A, kSame},
-        {"buckling_without_hinges", "\"buckling\"", B, kSame}}},
+        {"buckling_from_a_bending_length", "\"buckling\"", A, kSame}}},
+      {"fabric.compression",             T::only_extras, circle, _, _, _,   _,   _,    "",
+       {{"buckling_without_hinges", "\"buckling\"", B, kSame}}},
       {"fabric.compression",             T::only_extras, arc, _,  _,  _,   _,   _,    "",
        {{"buckling_with_hinges", "\"buckling\"", A, kSame}}},
       {"body",                           T::table_array, lift, A, _,  _,   _,   _,    "", {}},
@@ -330,15 +344,28 @@ const std::vector<KeyRow>& key_table() {
        {{"earth", "9.80665", A, kSame}, {"cap", "1000.0", A, kSame}, {"beyond_cap", "1000.1", R, kSame}}},
       // Each term is built only when its section is there.
       {"shear",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
-      {"shear.material",                 T::text,      circle, R, _,  _,   _,   R,    "",
-       {{"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
+      {"shear.rigidity_N_m",             T::number,    lift, _,   R,  R,   R,   _,    "",
+       {{"missing", kRemove, R, "shear"}, {"cap", "1e9", A, kSame}, {"and_a_table", "40.0\nmaterial = \"../materials/synthetic/linear-500.csv\"", R, "shear"}}},
+      {"shear.rigidity_gf_cm_deg",       T::number,    wrap, _,   R,  R,   R,   _,    "",
+       {{"missing", kRemove, R, "shear"}, {"and_N_m", "0.8\nrigidity_N_m = 40.0", R, "shear"}}},
+      {"shear.material",                 T::text,      circle, _, _,  _,   _,   R,    "",
+       {{"missing", kRemove, R, "shear"}, {"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
       {"bending",                        T::table,     circle, A, _,  _,   _,   _,    "", {}},
       {"bending.stiffness_N_m",          T::number,    circle, _, R,  R,   R,   _,    "",
        {{"cap", "1e9", A, kSame}, {"beyond_cap", "1.1e9", R, kSame}, {"missing", kRemove, R, "bending"},
         {"and_rigidity", "0.5\nrigidity_Nm = 5e-5", R, "bending"}}},
       {"bending.rigidity_Nm",           T::number,    arc,  _,   R,  R,   R,   _,    "",
        {{"cap", "1e3", A, kSame}, {"beyond_cap", "1001.0", R, kSame}, {"missing", kRemove, R, "bending"},
-        {"measured_denim", "6.42e-5", A, kSame}}},
+        {"measured_denim", "6.42e-5", A, kSame}, {"warp_and_weft", "[6e-6, 5e-6]", A, kSame},
+        {"one_direction_zero", "[6e-6, 0.0]", R, kSame}, {"three_values", "[6e-6, 5e-6, 4e-6]", R, kSame},
+        {"and_micro", "5e-5\nrigidity_uNm = 50.0", R, "bending"}}},
+      {"bending.rigidity_uNm",          T::number,    wrap, _,   R,  R,   R,   _,    "",
+       {{"cap", "1e9", A, kSame}, {"beyond_cap", "1.1e9", R, kSame}, {"missing", kRemove, R, "bending"},
+        {"warp_and_weft", "[7.5, 6.4]", A, kSame}, {"one_direction_negative", "[7.5, -6.4]", R, kSame}}},
+      // B = m·g·c³ needs the mass, which the base's tables and fabric.areal_mass_g_m2 give.
+      {"bending.bending_length_cm",     T::number,    lift, _,   R,  R,   R,   _,    "",
+       {{"cap", "1000.0", A, kSame}, {"beyond_cap", "1001.0", R, kSame}, {"missing", kRemove, R, "bending"},
+        {"warp_and_weft", "[2.5, 1.8]", A, kSame}, {"and_rigidity", "2.0\nrigidity_uNm = 7.0", R, "bending"}}},
       {"wind",                           T::table,     arc,  A,   _,  _,   _,   _,    "", {}},
       {"wind.velocity_m_s",              T::vec3,      arc,  R,   A,  R,   R,   _,    "",
        {{"along_x", "[5.0, 0.0, 0.0]", A, kSame}, {"speed_of_sound", "[0.0, 0.0, 1000.0]", A, kSame},
@@ -377,6 +404,9 @@ const std::vector<KeyRow>& key_table() {
       // No support: a pin test, A_disc = 0.
       {"drape.support",                  T::text,      circle, A, _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb\"", R, kSame}, {"no_such_body", "\"mold\"", B, kSame}}},
+      // The tester's clamp: a disc of nodes round the specimen's centre, narrower than the specimen.
+      {"drape.clamp_radius_m",           T::number,    circle, A, R,  R,   R,   _,    "",
+       {{"the_specimens_radius", "0.05", R, kSame}, {"nearly_the_specimen", "0.049", A, kSame}}},
       {"initial",                        T::table,     lift, A,   _,  _,   _,   _,    "", {}},
       {"initial.shape",                  T::choice,    lift, A,   _,  _,   _,   R,    "",
        {{"upper_case", "\"Lift\"", R, kSame}, {"flat", "\"flat\"", A, kSame}, {"bump", "\"bump\"", A, kSame},
@@ -415,8 +445,9 @@ const std::vector<KeyRow>& key_table() {
        {{"cap", "200", A, kSame}, {"beyond_cap", "201", R, kSame}}},
       {"solver.friction_creep",          T::number,    lift, A,   R,  R,   R,   _,    "",
        {{"cap", "0.1", A, kSame}, {"beyond_cap", "0.11", R, kSame}}},
-      // Inertia only: the rest and the iteration count do not depend on the density.
-      {"solver.areal_density_kg_m2",     T::number,    lift, A,   R,  R,   A,   _,    "", {}},
+      // Dynamic's mass for a fabric without one: every base weighs its fabric, beside which the
+      // key is refused (lab_units_test.cpp); its range is checked in scene_toml_test.cpp.
+      {"solver.areal_density_kg_m2",     T::only_extras, lift, _, _,  _,   _,   _,    "", {}},
       {"solver.damping",                 T::number,    lift, A,   R,  A,   R,   _,    "", {{"one", "1.0", R, kSame}}},
       {"solver.time_step_fraction",      T::number,    lift, A,   R,  R,   R,   _,    "", {{"one", "1.0", A, kSame}}},
       {"solver.stretch_limit",           T::number,    lift, A,   R,  A,   R,   _,    "", {{"cap", "100.0", A, kSame}}},
@@ -758,7 +789,7 @@ TEST(SceneBadValueTable, ListsEveryKeyTheParserKnows) {
       {Base::lift, ""},          {Base::lift, "scene"},  {Base::lift, "fabric"}, {Base::lift, "body.0"},
       {Base::lift, "constraint.0"}, {Base::lift, "initial"}, {Base::lift, "solver"}, {Base::lift, "output"},
       {Base::wrap, "initial"},   {Base::circle, "fabric"}, {Base::arc, "fabric"},  {Base::circle, "shear"},
-      {Base::circle, "bending"}, {Base::arc, "bending"},  {Base::circle, "drape"},
+      {Base::circle, "bending"}, {Base::arc, "bending"},  {Base::circle, "drape"}, {Base::lift, "shear"},
       {Base::lift, "body.0.path"}, {Base::circle, "clamp"}};
   for (const auto& [base, section] : sections) {
     const std::set<std::string> known = known_keys(base_scene(base), section);

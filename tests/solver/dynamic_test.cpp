@@ -119,7 +119,7 @@ Eigen::MatrixXd start_stiffness(const Model& model) {
       for (int p = 0; p < c.count; ++p)
         for (int q = 0; q < c.count; ++q)
           k.block<3, 3>(3 * c.node[p], 3 * c.node[q]) +=
-              2.0 * hinges->rigidity_Nm() * h.shape_factor * c.weight[p] * c.weight[q] * Eigen::Matrix3d::Identity();
+              2.0 * hinges->rigidity_of(model, h) * h.shape_factor * c.weight[p] * c.weight[q] * Eigen::Matrix3d::Identity();
     }
   return k;
 }

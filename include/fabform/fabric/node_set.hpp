@@ -1,7 +1,7 @@
 #pragma once
 // Named sets of fabric nodes a scene constrains: the perimeter, an edge, the corners, one node
-// by index, the node nearest a point, the nodes inside a box, or a frame of given width round
-// the fabric's edge (what a blank holder grips). Points are in the flat
+// by index, the node nearest a point, the nodes inside a box, a frame of given width round
+// the fabric's edge (what a blank holder grips), or a disc (what a drape tester's clamp holds). Points are in the flat
 // fabric's own frame (metres from its lower-left corner, warp along x, weft along y).
 #include <string>
 #include <vector>
@@ -14,13 +14,13 @@ namespace fabform {
 
 struct NodeSetSpec {
   enum class Kind { perimeter, edge_left, edge_right, edge_bottom, edge_top, corners, index,
-                    nearest, box, frame };
+                    nearest, box, frame, disc };
   Kind kind = Kind::perimeter;
   int i = 0, j = 0;                                      // Kind::index
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();       // Kind::nearest
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();       // Kind::nearest; Kind::disc, its centre
   Eigen::Vector2d box_min = Eigen::Vector2d::Zero();     // Kind::box, inclusive
   Eigen::Vector2d box_max = Eigen::Vector2d::Zero();
-  double width_m = 0.0;  // Kind::frame: nodes this close to the flat fabric's edge, or closer
+  double width_m = 0.0;  // Kind::frame: nodes this close to the flat fabric's edge, or closer; Kind::disc: its radius
 };
 
 /// Parses "perimeter", "corners", "edge:left|right|bottom|top"; returns false otherwise.

@@ -39,11 +39,17 @@ struct HingeStencil {
 };
 HingeStencil hinge_stencil(const Hinge& hinge);
 
-/// The fabric's hinges as a term of the model, with its flexural rigidity B (N·m).
+/// The fabric's hinges as a term of the model, with its flexural rigidity B (N·m) along the warp
+/// and along the weft (a strip cut along the warp and bent along its length resists with the
+/// warp's). A hinge bends the fabric across its edge, so an edge along the weft takes the warp's
+/// B; between, B_warp·cos²ψ + B_weft·sin²ψ, ψ the bending direction's angle from the warp: the
+/// simplest orthotropic rule through both measured values (a measured bias value is not used).
 class HingeBending final : public Term {
  public:
-  explicit HingeBending(double rigidity_Nm) : rigidity_Nm_(rigidity_Nm) {}
-  double rigidity_Nm() const { return rigidity_Nm_; }
+  explicit HingeBending(double rigidity_Nm) : rigidity_warp_Nm_(rigidity_Nm), rigidity_weft_Nm_(rigidity_Nm) {}
+  HingeBending(double warp_Nm, double weft_Nm) : rigidity_warp_Nm_(warp_Nm), rigidity_weft_Nm_(weft_Nm) {}
+  /// The rigidity a hinge bends with, from its edge's direction in the flat fabric.
+  double rigidity_of(const Model& model, const Hinge& hinge) const;
 
   std::string describe(const Model& model) const override;
   /// −∂E/∂x_node = −Σ 2·B·s·c_node·k over the hinges that reach the node.
@@ -63,7 +69,8 @@ class HingeBending final : public Term {
   /// The energy of the hinges that reach `node`, with it at `at`.
   double node_energy(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const;
 
-  double rigidity_Nm_;
+  double rigidity_warp_Nm_;
+  double rigidity_weft_Nm_;
 };
 
 }  // namespace fabform

@@ -35,7 +35,7 @@ struct Model {
   std::optional<TensionTable> bend = {};    // the bend springs' table, when the fabric has them
   TermList terms;                           // every term acting on the fabric, springs first
   std::vector<ToolPath> paths;              // none, or one per body: its travel (steps 0: it stays put)
-  std::vector<std::string> read_warnings;   // what reading the body files skipped or tolerated
+  std::vector<std::string> read_warnings;   // what reading the inputs skipped, tolerated or found implausible
 
   /// The table a kind of spring follows; the model builder makes sure the fabric's kinds have one.
   const TensionTable& table(SpringKind kind) const {

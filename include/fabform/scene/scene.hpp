@@ -59,21 +59,29 @@ struct GravitySpec {
   SourceLocation where;
 };
 
-// [shear]: the diagonal springs (seed 000's triangular mesh, seed 004's shear springs) and the
-// material file of their bias tension.
+// [shear]: the diagonal springs (seed 000's triangular mesh, seed 004's shear springs), following
+// the material file of their bias tension or a measured shear rigidity G (KES, FAST).
 struct ShearSpec {
   bool on = false;
-  std::string material_path;
+  std::string material_path;  // "" when the rigidity is given instead
   SourceLocation material_where;
+  double rigidity_N_m = 0.0;  // G, shear force per width per radian (N/m); 0: from the table
+  SourceLocation rigidity_where;
 };
 
-// [bending]: seed 004's bend springs (stiffness_N_m) or hinges with the
-// fabric's flexural rigidity (rigidity_Nm); one of the two.
+// [bending]: seed 004's bend springs (stiffness_N_m) or hinges with the fabric's flexural
+// rigidity, given in N·m or µN·m or as a cantilever's bending length; one of them. Index 0 is
+// the warp's (a strip cut along the warp, bent along its length), 1 the weft's.
 struct BendingSpec {
   bool on = false;
   double stiffness_N_m = 0.0;  // bend springs' tension per width per unit strain; 0: none
-  double rigidity_Nm = 0.0;   // B, moment per width per unit curvature (N·m); 0: none
+  Eigen::Vector2d rigidity_Nm = Eigen::Vector2d::Zero();  // B, moment per width per unit curvature
+  // Cantilever bending lengths c (m), BS 3356 / ASTM D1388: B = m·g₀·c³ with the fabric's areal
+  // mass m, so the model builder, which knows m, turns them into rigidities. 0: not given.
+  Eigen::Vector2d bending_length_m = Eigen::Vector2d::Zero();
+  bool hinges() const { return rigidity_Nm.maxCoeff() > 0.0 || bending_length_m.maxCoeff() > 0.0; }
   SourceLocation where;
+  SourceLocation value_where;  // the key that gave the rigidity or bending length
 };
 
 // [wind]: seed 004's wind, velocity_m_s (required: a wind has a direction) and its strength
@@ -106,10 +114,14 @@ struct ClampSpec {
 
 // [drape]: the scene is a drape test of a circular fabric; its result gives the drape
 // coefficient, with the named body as the support disc (none: over a pin, A_disc = 0).
+// clamp_radius_m: the tester's clamp, two discs of that radius holding the specimen's centre
+// (BS 5058, ISO 9073-9): its nodes are held in x, y and z.
 struct DrapeSpec {
   bool on = false;
   std::string support;  // a body's name, or ""
   SourceLocation support_where;
+  double clamp_radius_m = 0.0;  // 0: no clamp (the scene holds the specimen by its constraints)
+  SourceLocation clamp_where;
   SourceLocation where;
 };
 
@@ -128,6 +140,10 @@ struct Scene {
   std::optional<double> locking_angle_deg;  // [fabric]: where a cell locks, without a stiffening shear table
   Compression compression = Compression::none;  // [fabric]: what tension-only tables give in compression
   SourceLocation compression_where;
+  // [fabric] areal_mass_g_m2, in kg/m²: the fabric's mass per area, when the scene gives it rather
+  // than (or as well as, and then alike) its material files.
+  std::optional<double> areal_mass_kg_m2;
+  SourceLocation areal_mass_where;
   std::vector<BodySpec> bodies;
   std::vector<ConstraintSpec> constraints;
   GravitySpec gravity;

@@ -10,14 +10,18 @@
 namespace fabform {
 
 /// A command-line override: a dotted key (array elements by index, e.g. body.0.scale) and a
-/// TOML value; a value that is not valid TOML is taken as a string.
+/// TOML value; a value that is not valid TOML is taken as a string. `unset` removes the key
+/// instead (--unset KEY), so that a scene can switch between keys that exclude each other.
 struct SceneOverride {
   std::string key;
   std::string value;
+  bool unset = false;
 };
 
 /// Parses "KEY=VALUE"; throws InputError naming the argument when there is no '='.
 SceneOverride parse_override(const std::string& argument);
+/// The override of --unset KEY.
+SceneOverride parse_unset(const std::string& key);
 
 /// Parses, overrides and validates scene text; `path` names it in errors and anchors its
 /// relative paths.
