@@ -31,10 +31,13 @@ Usage (after tools/setup.sh):
   /usr/bin/python3 tools/bench_solvers.py --sizes 41,101 --scenes dome --tolerances 1e-2,1e-4,1e-6
   /usr/bin/python3 tools/bench_solvers.py --sizes 401,1001 --starts smooth --solvers newton --threads 1,2
   /usr/bin/python3 tools/bench_solvers.py --smoke          # seconds: the test suite's check
+  /usr/bin/python3 tools/bench_solvers.py --scale --sizes 101,201,401 --timeout 600
+--scale measures newton's time against the dome's size instead (tools/bench_scale.py says how).
 --smoke runs dome N=21, smooth start, every solver at 1e-2 and 1e-5 N, one thread, 60 s budget
 (it overrides the case options) and exits 1 unless every run converged below its tolerance,
 was compared with the reference and has its row in bench.csv.
 Standard library only; matplotlib (python3-matplotlib) is optional, for the plots.
+FABFORM_BINARY names the fabform to run (default build/fabform).
 """
 import argparse
 import array
@@ -52,7 +55,7 @@ import time
 import tomllib
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-FABFORM = ROOT / "build" / "fabform"
+FABFORM = pathlib.Path(os.environ.get("FABFORM_BINARY", ROOT / "build" / "fabform"))
 FAST = "newton"                       # the reference solver and the one the targets are about
 
 
@@ -686,6 +689,9 @@ def smoke_problems(cases: list, args, csv_path: pathlib.Path) -> list:
 
 
 def main(argv: list) -> int:
+    if "--scale" in argv:
+        import bench_scale
+        return bench_scale.main(argv)
     args = validate(parse_args(argv))
     out = pathlib.Path(args.out).resolve()
     out.mkdir(parents=True, exist_ok=True)

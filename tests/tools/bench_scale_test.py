@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""tools/bench_solvers.py --scale (tools/bench_scale.py): its options (bad ones exit 2 in one
+line), the fitted exponent and the time ratio on synthetic figures, and on tiny domes (needs
+fabform: $FABFORM_BINARY, else build/fabform; skipped without it) a table whose estimate is
+within a factor of 3 of the measured distance, and a size over the timeout reported as such,
+with the larger sizes after it not run."""
+import csv
+import io
+import os
+import pathlib
+import subprocess
+import sys
+import tempfile
+import unittest
+from contextlib import redirect_stderr
+
+TOOLS = pathlib.Path(__file__).resolve().parents[2] / "tools"
+sys.path.insert(0, str(TOOLS))
+import bench_scale  # noqa: E402
+
+
+def exit_status(argv: list) -> int:
+    with redirect_stderr(io.StringIO()):
+        try:
+            bench_scale.parse_args(argv)
+        except SystemExit as stop:
+            return stop.code
+    return 0
+
+
+class Options(unittest.TestCase):
+    def test_defaults_are_the_issues_sizes(self):
+        args = bench_scale.parse_args(["--scale"])
+        self.assertEqual(args.sizes, [101, 201, 401, 1001])
+        self.assertEqual(args.timeout, 600.0)
+
+    def test_sizes_are_sorted_without_duplicates(self):
+        self.assertEqual(bench_scale.parse_args(["--scale", "--sizes", "201,101,201"]).sizes, [101, 201])
+
+    def test_bad_options_exit_2(self):
+        for bad in (["--sizes", "abc"], ["--sizes", ""], ["--sizes", "2"], ["--sizes", "10002"],
+                    ["--timeout", "0"], ["--timeout", "-5"], ["--timeout", "nan"], ["--timeout", "soon"],
+                    ["--runs", "0"], ["--threads", "0"], ["--reference-tol", "0"]):
+            with self.subTest(bad=bad):
+                self.assertEqual(exit_status(["--scale", *bad]), 2)
+
+
+class Fits(unittest.TestCase):
+    def test_a_power_law_gives_its_exponent(self):
+        points = [(n * n, 3e-6 * (n * n) ** 1.37) for n in (101, 201, 401)]
+        self.assertAlmostEqual(bench_scale.fit_exponent(points), 1.37, places=12)
+
+    def test_least_squares_through_scatter(self):
+        # log t = 1 + 2 log n off by +0.1, -0.1, +0.1 at log n = 0, 1, 2: slope 2, as the line's.
+        points = [(1.0, 2.718281828 ** 1.1), (2.718281828, 2.718281828 ** 2.9), (2.718281828 ** 2, 2.718281828 ** 5.1)]
+        self.assertAlmostEqual(bench_scale.fit_exponent(points), 2.0, places=6)
+
+    def test_one_size_is_not_fitted(self):
+        self.assertIsNone(bench_scale.fit_exponent([(10201, 1.0)]))
+        self.assertIsNone(bench_scale.fit_exponent([]))
+
+    def test_ratio_of_two_finished_sizes(self):
+        rows = [{"N": 201, "status": "converged", "solve_s": 2.0}, {"N": 1001, "status": "converged", "solve_s": 50.0}]
+        self.assertEqual(bench_scale.time_ratio(rows, "solve_s"), (25.0, ""))
+
+    def test_ratio_says_why_it_is_missing(self):
+        rows = [{"N": 201, "status": "converged", "solve_s": 2.0},
+                {"N": 1001, "status": "over the timeout", "note": "killed after 600 s"}]
+        ratio, why = bench_scale.time_ratio(rows, "solve_s")
+        self.assertIsNone(ratio)
+        self.assertIn("N=1001 over the timeout (killed after 600 s)", why)
+        ratio, why = bench_scale.time_ratio(rows[:1], "solve_s")
+        self.assertIsNone(ratio)
+        self.assertIn("N=1001 was not asked for", why)
+
+
+BINARY = pathlib.Path(os.environ.get("FABFORM_BINARY", TOOLS.parent / "build" / "fabform"))
+
+
+@unittest.skipUnless(BINARY.exists(), f"{BINARY} is not built")
+class TinyDomes(unittest.TestCase):
+    def scale(self, out: str, *options: str) -> list:
+        done = subprocess.run([sys.executable, str(TOOLS / "bench_solvers.py"), "--scale", "--out", out, *options],
+                              capture_output=True, text=True, env=dict(os.environ, FABFORM_BINARY=str(BINARY)))
+        self.assertEqual(done.returncode, 0, done.stderr)
+        with open(pathlib.Path(out) / "scale.csv", newline="") as f:
+            return list(csv.DictReader(f)), done.stdout
+
+    def test_table_with_the_estimate_against_the_measured_distance(self):
+        with tempfile.TemporaryDirectory() as out:
+            rows, text = self.scale(out, "--sizes", "11,21", "--runs", "2", "--timeout", "120",
+                                    "--reference-max", "21")
+        self.assertEqual([r["status"] for r in rows], ["converged", "converged"])
+        for r in rows:
+            self.assertEqual(r["runs"], "2")
+            estimate, measured = float(r["position_error_m"]), float(r["measured_distance_m"])
+            self.assertTrue(measured / 3 <= estimate <= 3 * measured, r)
+        self.assertIn("p = ", text)
+        self.assertIn("t(1001) / t(201): could not be computed: N=1001 was not asked for", text)
+
+    def test_a_size_over_the_timeout_is_reported_and_larger_ones_not_run(self):
+        with tempfile.TemporaryDirectory() as out:
+            rows, text = self.scale(out, "--sizes", "11,21", "--timeout", "0.001")
+        self.assertEqual([r["status"] for r in rows], ["over the timeout", "not run"])
+        self.assertIn("killed after", rows[0]["note"])
+        self.assertIn("N=11 was already over the timeout", rows[1]["note"])
+        self.assertIn("not fitted", text)
+
+
+if __name__ == "__main__":
+    unittest.main()

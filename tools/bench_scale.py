@@ -1,0 +1,258 @@
+#!/usr/bin/python3
+"""How newton's time grows with the dome's size: `tools/bench_solvers.py --scale` (issue 23, item 7).
+
+Why: the issue's targets are a million nodes (N = 1001) to 1e-6 N in 60 s and 4 GiB, and a time
+that grows near-linearly, t(1001) / t(201) <= 30. This measures them, and says plainly what it
+could not measure: a size that does not finish within --timeout is reported as over the timeout
+(with the timeout), and the larger sizes after it are not run.
+
+What it does: for each N in --sizes (nodes a side; default 101,201,401,1001) it runs
+`fabform run scenes/dome.toml --set fabric.divisions=[N-1,N-1] --solver newton --tol 1e-6`
+up to --runs times (again only while the size's runs so far and one more fit in --timeout:
+several runs where affordable, medians), and records per N: wall seconds (result.json's
+wall_seconds, the whole run) and solve seconds (solve_seconds), medians over the runs;
+iterations; peak memory (the largest resident size of the runs, from wait4's rusage); and
+result.json's position_error_m, the estimate of the largest node distance from the exact rest.
+Where N <= --reference-max it also solves to --reference-tol (the reference) and measures the
+largest node distance of the first run from it, the figure the estimate is checked against.
+Then: the exponent p of time against nodes, t ~ nodes^p, fitted by least squares on log t
+against log nodes over the sizes that finished (solve and wall), and t(1001) / t(201).
+
+Writes scale.csv and scale.md into --out (default results/bench_scale) and prints scale.md.
+The machine's load average is printed with it: timings on a shared machine are under load.
+Exit status 0, or 2 for bad options (one line).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import pathlib
+import shutil
+import statistics
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import bench_solvers as bench  # noqa: E402
+
+SIZES = "101,201,401,1001"
+TOLERANCE_N = 1e-6     # the dome scene's e
+SOLVER = "newton"
+COLUMNS = ["N", "nodes", "status", "runs", "wall_s", "solve_s", "iterations", "peak_MiB",
+           "position_error_m", "measured_distance_m", "note"]
+
+
+def fail(message: str) -> None:
+    print(f"bench_solvers.py --scale: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def parse_sizes(text: str) -> list:
+    """'101,201' -> [101, 201], ascending without duplicates; nodes a side, 3 ... 10001."""
+    try:
+        sizes = sorted({int(v) for v in text.split(",") if v.strip()})
+    except ValueError:
+        fail(f"--sizes: not a comma-separated list of integers: '{text}'")
+    if not sizes:
+        fail("--sizes: empty list")
+    if not all(3 <= n <= 10001 for n in sizes):
+        fail("--sizes: nodes a side must be 3 ... 10001")
+    return sizes
+
+
+def parse_args(argv: list) -> argparse.Namespace:
+    p = argparse.ArgumentParser(prog="bench_solvers.py --scale", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--scale", action="store_true", required=True, help="this mode")
+    p.add_argument("--sizes", default=SIZES, help=f"nodes a side (default {SIZES})")
+    p.add_argument("--timeout", type=float, default=600.0, help="seconds for each size's runs (600)")
+    p.add_argument("--runs", type=int, default=3, help="runs a size at most, for the medians (3)")
+    p.add_argument("--threads", type=int, default=1, help="threads of each run (1)")
+    p.add_argument("--reference-max", type=int, default=201,
+                   help="largest N solved to --reference-tol to measure the distance (201)")
+    p.add_argument("--reference-tol", type=float, default=1e-11, help="newton's e for the reference (1e-11)")
+    p.add_argument("--out", default=str(bench.ROOT / "results" / "bench_scale"), help="output folder")
+    args = p.parse_args(argv)
+    args.sizes = parse_sizes(args.sizes)
+    if not (math.isfinite(args.timeout) and args.timeout > 0):
+        fail("--timeout: must be a positive number of seconds")
+    if args.runs < 1:
+        fail("--runs: at least 1")
+    if args.threads < 1:
+        fail("--threads: at least 1")
+    if not (math.isfinite(args.reference_tol) and args.reference_tol > 0):
+        fail("--reference-tol: must be a positive force")
+    return args
+
+
+# --- the fits --------------------------------------------------------------------------------
+
+def fit_exponent(points: list):
+    """p of t = c * nodes^p by least squares on (log nodes, log t); None with fewer than two
+    distinct sizes."""
+    pts = [(math.log(n), math.log(t)) for n, t in points if n > 0 and t > 0]
+    if len({x for x, _ in pts}) < 2:
+        return None
+    mx = statistics.fmean(x for x, _ in pts)
+    my = statistics.fmean(y for _, y in pts)
+    return sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts)
+
+
+def time_ratio(rows: list, key: str, big: int = 1001, small: int = 201) -> tuple:
+    """(t(big) / t(small), "") or (None, why it could not be computed)."""
+    by_n = {r["N"]: r for r in rows}
+    for n in (big, small):
+        if n not in by_n:
+            return None, f"N={n} was not asked for"
+        if by_n[n]["status"] != "converged":
+            return None, f"N={n} {by_n[n]['status']}" + (f" ({by_n[n]['note']})" if by_n[n].get("note") else "")
+    return by_n[big][key] / by_n[small][key], ""
+
+
+# --- the runs --------------------------------------------------------------------------------
+
+def command(n: int, tolerance: float, threads: int, out: pathlib.Path) -> list:
+    return [str(bench.FABFORM), "run", str(bench.scene_path("dome")), "--out", str(out), "--solver", SOLVER,
+            "--tol", repr(tolerance), "--threads", str(threads), "--max-iter", str(bench.MAX_ITERATIONS),
+            "--set", f"fabric.divisions=[{n - 1},{n - 1}]", "--quiet"]
+
+
+def run_once(n: int, tolerance: float, threads: int, out: pathlib.Path, budget: float) -> dict:
+    """One fabform run within `budget` seconds: its figures, and its positions when it finished."""
+    if out.exists():
+        shutil.rmtree(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    log = out.parent / f"{out.name}.stderr.txt"
+    code, peak, wall = bench.wait_within(bench.launch(command(n, tolerance, threads, out), log), budget)
+    if code is None:
+        return {"status": "over the timeout", "peak_MiB": peak, "note": f"killed after {budget:g} s"}
+    result_file = out / "result.json"
+    result = json.loads(result_file.read_text()) if code in (0, 3) and result_file.exists() else {}
+    if not result:
+        return {"status": "failed", "peak_MiB": peak, "note": bench.last_line(log) or f"exit {code}"}
+    return {"status": bench.status_of(code, result), "peak_MiB": peak, "wall_s": result["wall_seconds"],
+            "solve_s": result["solve_seconds"], "iterations": result["iterations"], "nodes": result["nodes"],
+            "position_error_m": result.get("position_error_m"), "positions": bench.read_positions(out), "note": ""}
+
+
+def measure_size(n: int, args, out: pathlib.Path) -> dict:
+    """Up to --runs runs of one size, all within --timeout; the row of its medians."""
+    runs, spent = [], 0.0
+    while len(runs) < args.runs:
+        left = args.timeout - spent
+        if runs and runs[-1]["wall_s"] > left:  # one more would not fit in the timeout
+            break
+        run = run_once(n, TOLERANCE_N, args.threads, out / f"N{n}" / f"run{len(runs) + 1}", left)
+        print(f"  N={n} run {len(runs) + 1}: {run['status']}, {run.get('wall_s', '-')} s", file=sys.stderr)
+        if run["status"] != "converged":
+            if not runs:
+                return dict(run, N=n, nodes=n * n, runs=0)
+            break
+        runs.append(run)
+        spent += run["wall_s"]
+    first = runs[0]
+    return {"N": n, "nodes": first["nodes"], "status": "converged", "runs": len(runs),
+            "wall_s": statistics.median(r["wall_s"] for r in runs),
+            "solve_s": statistics.median(r["solve_s"] for r in runs),
+            "iterations": first["iterations"], "peak_MiB": max(r["peak_MiB"] for r in runs),
+            "position_error_m": first["position_error_m"], "positions": first["positions"], "note": ""}
+
+
+def add_measured_distance(row: dict, args, out: pathlib.Path) -> None:
+    """The first run's largest node distance from newton at --reference-tol, where affordable."""
+    if row["status"] != "converged" or row["N"] > args.reference_max:
+        return
+    ref = run_once(row["N"], args.reference_tol, args.threads, out / f"N{row['N']}" / "reference", args.timeout)
+    if ref.get("positions") is None:
+        row["note"] = f"reference {ref['status']}"
+        return
+    row["measured_distance_m"] = bench.largest_distance(row["positions"], ref["positions"])
+
+
+def measure(args, out: pathlib.Path) -> list:
+    rows = []
+    for n in args.sizes:
+        reached = [r for r in rows if r["status"] == "over the timeout"]
+        if reached:
+            rows.append({"N": n, "nodes": n * n, "status": "not run", "runs": 0,
+                         "note": f"N={reached[0]['N']} was already over the timeout ({args.timeout:g} s)"})
+            continue
+        row = measure_size(n, args, out)
+        add_measured_distance(row, args, out)
+        row.pop("positions", None)
+        rows.append(row)
+    return rows
+
+
+# --- the report ------------------------------------------------------------------------------
+
+def cell(row: dict, key: str, form: str) -> str:
+    v = row.get(key)
+    return "" if v is None or (isinstance(v, float) and math.isnan(v)) else format(v, form)
+
+
+def ratio_cell(row: dict) -> str:
+    est, measured = row.get("position_error_m"), row.get("measured_distance_m")
+    return f"{est / measured:.2f}" if est and measured else ""
+
+
+def table(rows: list) -> list:
+    lines = ["| N | nodes | status | runs | wall s (median) | solve s (median) | iterations | peak MiB "
+             "| position_error_m | measured distance (m) | estimate / measured | note |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append("| " + " | ".join([
+            str(r["N"]), str(r["nodes"]), r["status"], str(r["runs"]), cell(r, "wall_s", ".3g"),
+            cell(r, "solve_s", ".3g"), cell(r, "iterations", "d"), cell(r, "peak_MiB", ".0f"),
+            cell(r, "position_error_m", ".2e"), cell(r, "measured_distance_m", ".2e"), ratio_cell(r),
+            r.get("note", "")]) + " |")
+    return lines
+
+
+def fits(rows: list) -> list:
+    done = [r for r in rows if r["status"] == "converged"]
+    lines = []
+    for key, what in (("solve_s", "solve seconds"), ("wall_s", "wall seconds")):
+        p = fit_exponent([(r["nodes"], r[key]) for r in done])
+        over = ", ".join(str(r["N"]) for r in done)
+        lines.append(f"- {what} ~ nodes^p: p = {p:.2f} (least squares over N = {over})" if p is not None
+                     else f"- {what} ~ nodes^p: not fitted (fewer than two sizes finished)")
+        ratio, why = time_ratio(rows, key)
+        lines.append(f"- {what}, t(1001) / t(201) = {ratio:.1f}" if ratio is not None
+                     else f"- {what}, t(1001) / t(201): could not be computed: {why}")
+    return lines
+
+
+def report(rows: list, args, load_before: tuple, load_after: tuple) -> str:
+    head = ["# Dome scaling, newton to 1e-6 N", "",
+            f"`bench_solvers.py {' '.join(sys.argv[1:])}`, {bench.fabform_version()}, {os.cpu_count()} cores, "
+            f"{args.threads} thread(s); timeout {args.timeout:g} s a size; load average "
+            f"{load_before[0]:.2f} before, {load_after[0]:.2f} after (a shared machine: timings under load). "
+            f"Distances measured from newton at {args.reference_tol:g} N where N <= {args.reference_max}.", ""]
+    return "\n".join(head + table(rows) + [""] + fits(rows)) + "\n"
+
+
+def write_csv(rows: list, path: pathlib.Path) -> None:
+    with path.open("w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=COLUMNS, extrasaction="ignore")
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+def main(argv: list) -> int:
+    args = parse_args(argv)
+    if not bench.FABFORM.exists():
+        fail(f"{bench.FABFORM} is missing: build it first (tools/setup.sh), or name it in FABFORM_BINARY")
+    out = pathlib.Path(args.out).resolve()
+    out.mkdir(parents=True, exist_ok=True)
+    load_before = os.getloadavg()
+    rows = measure(args, out)
+    text = report(rows, args, load_before, os.getloadavg())
+    write_csv(rows, out / "scale.csv")
+    (out / "scale.md").write_text(text)
+    print(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
