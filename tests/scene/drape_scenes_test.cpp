@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include "fabform/analysis/drape_figures.hpp"
 #include "fabform/model/potential_energy.hpp"
@@ -20,6 +22,8 @@ namespace {
 struct Draped {
   Summary summary;
   DrapeFigures figures;
+  double area_flat_m2 = 0.0;    // the fabric's faces flat
+  double area_formed_m2 = 0.0;  // and draped
 };
 
 // Solves the scene with the solver it names and reads the drape figures as result.json does.
@@ -32,6 +36,8 @@ Draped drape(const Scene& scene) {
     if (body.name() == scene.drape.support) support = support_area(body.mesh());
   const double r = scene.fabric.radius_m();
   out.figures = drape_figures(model.fabric, state.x, scene.origin_m.head<2>() + Eigen::Vector2d(r, r), support);
+  out.area_flat_m2 = model.fabric.flat_area();
+  for (const Face& face : model.fabric.faces()) out.area_formed_m2 += face_area(face, state.x);
   return out;
 }
 
@@ -83,6 +89,43 @@ TEST(CusickDrape, SoftKnitFoldsOverTheDisc) {
   EXPECT_GT(d.figures.coefficient, 0.0);
   EXPECT_LT(d.figures.coefficient, 0.5);
   EXPECT_EQ(d.figures.shadow_pieces, 1);
+}
+
+// The Cusick scene as issue 22 asks its folds to be measured: the compression response that
+// buckles (item 2) and a seeded jitter of the start 0.1 mm in z (item 4), meshed as shipped
+// (quadrangular, 40 divisions) or as rings on spokes (20 on 64: a comparable 1281 nodes).
+Draped cusick(const std::string& compression, bool arc) {
+  Scene scene = load_scene(test::source_path("scenes/cusick.toml"),
+                           {{"fabric.compression", compression}, {"initial.perturbation_m", "1e-4"}, {"initial.seed", "1"}});
+  if (arc) {
+    scene.fabric.mesh = FabricSpec::Mesh::arc;
+    scene.fabric.rings = 20;
+    scene.fabric.spokes = 64;
+  }
+  return drape(scene);
+}
+
+// Tension-only, the overhang gathers in its own plane (the whole specimen loses 12 % of its area in
+// the README's run without perturbation; more than 5 % is asserted);
+// buckling, it keeps its area (within 1 %) and folds instead.
+TEST(CusickDrape, BucklingKeepsTheAreaThatTensionOnlyLoses) {
+  const Draped none = cusick("none", false), buckling = cusick("buckling", false);
+  ASSERT_TRUE(none.summary.converged()) << none.summary.message;
+  ASSERT_TRUE(buckling.summary.converged()) << buckling.summary.message;
+  EXPECT_LT(none.area_formed_m2, 0.95 * none.area_flat_m2);
+  EXPECT_NEAR(buckling.area_formed_m2, buckling.area_flat_m2, 0.01 * buckling.area_flat_m2);
+}
+
+// Without compression and perturbation the quadrangular mesh gave 4 folds and the arc mesh none
+// (issue 22); with them the two meshes give 9 and 10 (README, "Drape": seeds and refinements
+// are measured there, by tools/drape_meshes.py, and spread further).
+TEST(CusickDrape, FoldCountComesFromTheFabricNotTheMesh) {
+  const Draped quadrangular = cusick("buckling", false), arc = cusick("buckling", true);
+  ASSERT_TRUE(quadrangular.summary.converged()) << quadrangular.summary.message;
+  ASSERT_TRUE(arc.summary.converged()) << arc.summary.message;
+  EXPECT_GE(quadrangular.figures.folds, 7);
+  EXPECT_GE(arc.figures.folds, 7);
+  EXPECT_LE(std::abs(quadrangular.figures.folds - arc.figures.folds), 1);
 }
 
 // Seed 000's damped dynamics: kinetic plus potential energy never rises along the trajectory.
