@@ -158,13 +158,13 @@ void read_fabric(TableReader& r, Scene* scene) {
   scene->compression_where = r.locate_key("compression");
   if (shape == "rectangle")
     r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
-                     "areal_mass_g_m2"});
+                     "areal_mass_g_m2", "compression"});
   else if (scene->fabric.mesh == FabricSpec::Mesh::arc)
     r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
-                     "areal_mass_g_m2"});
+                     "areal_mass_g_m2", "compression"});
   else
     r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
-                     "areal_mass_g_m2"});
+                     "areal_mass_g_m2", "compression"});
 }
 
 // KES-FB1 gives G in gf/(cm·degree); fabform works in N/m per radian.
