@@ -18,6 +18,7 @@ bool is_peak(const std::string& path) {
 std::vector<std::string> result_figure_paths(const Scene& scene) {
   std::vector<std::string> paths = {
       "iterations", "residual_N", "residual_recomputed_N", "tolerance_N", "force_scale_N", "tolerance_relative",
+      "position_error_m",
       "residual_relative", "wall_seconds", "solve_seconds", "threads", "nodes", "contact_nodes",
       "max_penetration_m", "figures.area_flat_m2", "figures.area_formed_m2", "figures.contact_area_m2",
       "figures.draw_in_max_m", "figures.springs_cutting_bodies", "figures.springs_over_edges",
