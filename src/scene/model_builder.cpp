@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "fabform/io/mesh_reader.hpp"
@@ -412,7 +412,6 @@ Model build_model(const Scene& scene) {
   model.read_warnings = std::move(read_warnings);
   model.paths = build_paths(scene, model.bodies);
   add_drape_clamp(scene, &model);
-  perturb_start(scene.perturbation, model.locks, &model.start);  // after every lock is known
   const std::optional<GivenValue> mass = areal_mass(scene, warp, weft);
   add_shear(scene, &model);
   const Eigen::Vector2d rigidity = add_bending(scene, mass, &model);
@@ -420,6 +419,7 @@ Model build_model(const Scene& scene) {
   add_mass(scene, mass, &model);
   add_wind(scene, &model);
   add_clamp(scene, &model);
+  perturb_start(scene.perturbation, model.locks, &model.start);  // after every lock is known
   add_pressure(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);
