@@ -77,6 +77,14 @@ double TensionTable::energy_density(double strain) const {
   return energy_from_first_point(strain) - energy_at_zero_;
 }
 
+TensionTable TensionTable::scaled(double factor) const {
+  std::vector<TablePoint> points = points_;
+  for (TablePoint& p : points) p.tension_N_per_m *= factor;
+  TensionTable table(std::move(points), name_);
+  table.set_compression(compression_, flexural_rigidity_Nm_);
+  return table;
+}
+
 void TensionTable::set_compression(Compression mode, double flexural_rigidity_Nm) {
   compression_ = mode;
   flexural_rigidity_Nm_ = flexural_rigidity_Nm;

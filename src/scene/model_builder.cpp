@@ -283,10 +283,11 @@ FabricValues fabric_values(const Scene& scene, const Model& model, const std::op
   if (scene.shear.rigidity_N_m > 0.0) {
     v.shear_rigidity_N_m = GivenValue{scene.shear.rigidity_N_m, scene.shear.rigidity_where};
   } else if (model.shear) {
-    // A tension-only diagonal stretched by γ/2 stands for the cell alone: G = k/4 (add_shear).
+    // A tension-only diagonal stretched by γ/2 stands for the cell alone: G = k/4; both
+    // diagonals carrying: G = k/2 (add_shear, add_compression).
     const double k = small_strain_slope(*model.shear);
-    if (k > 0.0)
-      v.shear_rigidity_N_m = GivenValue{model.shear->tension_only() ? k / 4 : k / 2, {scene.shear.material_path, 0, ""}};
+    const bool both_ways = !model.shear->tension_only() || model.shear->compression() != Compression::none;
+    if (k > 0.0) v.shear_rigidity_N_m = GivenValue{both_ways ? k / 2 : k / 4, {scene.shear.material_path, 0, ""}};
   }
   return v;
 }
@@ -294,15 +295,22 @@ FabricValues fabric_values(const Scene& scene, const Model& model, const std::op
 // [fabric] compression: what the in-plane springs' tension-only tables give below zero strain
 // (compression_response.hpp). A buckling spring bows along its own length, so the warp's take
 // the warp's flexural rigidity, the weft's the weft's and the diagonals' their mean (the hinges'
-// B_warp·cos²ψ + B_weft·sin²ψ at ψ = 45°).
+// B_warp·cos²ψ + B_weft·sin²ψ at ψ = 45°). A tension-only shear table stands for the cell through
+// its stretched diagonal alone (k_d = 4·G); once the compressed diagonal pushes back as well, each
+// carries half the table: the same G in pure shear, and a cell squeezed along its bias resists it
+// (with slack diagonals only the warp and weft did, at half their strain, and a drape gathered at
+// the four bias directions whatever the fabric).
 void add_compression(const Scene& scene, const Eigen::Vector2d& rigidity, Model* model) {
   if (scene.compression == Compression::none) return;
   if (scene.compression == Compression::buckling && !(rigidity.minCoeff() > 0.0))
     throw InputError(scene.compression_where, "buckling needs the fabric's flexural rigidity: give it in [bending] "
-                                              "(rigidity_Nm or rigidity_uNm, the hinges')");
+                                              "(rigidity_uNm, rigidity_Nm or bending_length_cm, the hinges')");
   model->warp.set_compression(scene.compression, rigidity.x());
   model->weft.set_compression(scene.compression, rigidity.y());
-  if (model->shear) model->shear->set_compression(scene.compression, rigidity.mean());
+  if (model->shear && model->shear->tension_only()) {
+    model->shear = model->shear->scaled(0.5);
+    model->shear->set_compression(scene.compression, rigidity.mean());
+  }
 }
 
 // The blank holder grips its nodes in z (locks) and resists their draw-in by friction; its creep

@@ -200,18 +200,15 @@ void read_bending(TableReader r, Scene* scene) {
   b.on = true;
   b.where = r.where();
   const std::vector<std::string> keys = {"stiffness_N_m", "rigidity_Nm", "rigidity_uNm", "bending_length_cm"};
+  const std::string one_of = "give one of stiffness_N_m (seed 004's bend springs), rigidity_Nm or rigidity_uNm "
+                             "(hinges with the fabric's flexural rigidity) or bending_length_cm (a cantilever test's)";
   std::string key;
   for (const std::string& k : keys)
     if (r.has(k)) {
-      if (!key.empty())
-        throw InputError(b.where, "give one of stiffness_N_m (seed 004's bend springs), rigidity_Nm or rigidity_uNm "
-                                  "(hinges with the fabric's flexural rigidity) or bending_length_cm (a cantilever "
-                                  "test's), not " + key + " and " + k);
+      if (!key.empty()) throw InputError(b.where, one_of + ", not " + key + " and " + k);
       key = k;
     }
-  if (key.empty())
-    throw InputError(b.where, "give one of stiffness_N_m (seed 004's bend springs), rigidity_Nm or rigidity_uNm "
-                              "(hinges with the fabric's flexural rigidity) or bending_length_cm (a cantilever test's)");
+  if (key.empty()) throw InputError(b.where, one_of);
   b.value_where = r.locate_key(key);
   if (key == "stiffness_N_m") {
     b.stiffness_N_m = r.number("stiffness_N_m", 0.0, true);

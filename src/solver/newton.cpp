@@ -226,11 +226,17 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
   for (int iteration = first;; ++iteration) {
     bool stepped = true;
     if (iteration > first) {
-      // The step from the state last recorded measures its distance from the rest.
+      // The step from the state last recorded measures its distance from the rest. Proposing
+      // releases nodes that pull off a body; a run that stops here keeps the state's own contact.
+      std::vector<NodeContact> contact;
+      if (options.tolerance_m > 0.0) contact = state.contact;
       const std::optional<Proposal> proposal = step.propose();
       step_sizes.push_back(proposal ? largest_move(proposal->steps) : std::nan(""));
       const double distance = newton_position_error(step_sizes);
-      if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) break;
+      if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) {
+        state.contact = std::move(contact);
+        break;
+      }
       stepped = proposal && step.take(*proposal, summary.residual_N);
       if (!stepped) summary.position_error_m = distance;  // the state stays where it was measured
     }

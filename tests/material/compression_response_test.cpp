@@ -21,7 +21,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kPi = 3.14159265358979323846;
 
 // The Cusick knit's warp (k₀ = 96.96 N/m) and the ARCSim-corrected rigidity the Cusick scene
-// uses (6.95e-6 N·m) on its 7.5 mm springs: T_b = 1.22 N/m, ε_b = −1.26 %.
+// would use with one rigidity, the mean of its two (6.95e-6 N·m), on its 7.5 mm springs: T_b = 1.22 N/m, ε_b = −1.26 %.
 constexpr double kStiffness = 96.96;
 constexpr double kRigidity = 6.95e-6;
 constexpr double kRest = 0.0075;

@@ -147,6 +147,34 @@ TEST_F(LabUnits, ShearRigidityStoresTheContinuumShearEnergy) {
   }
 }
 
+// A tension-only shear table's diagonals, once compressed ones push back, carry half the table
+// each: a small pure shear stores what it stored with the stretched diagonal alone, and a cell
+// squeezed along its bias (by ε, the other bias unstrained) now resists through its diagonals.
+TEST_F(LabUnits, CompressionKeepsTheShearRigidityAndResistsBiasSqueeze) {
+  dir.write("shear.csv", "strain,tension_N_per_m\n0,0\n1,80\n");
+  const auto model_with = [&](const std::string& compression) {
+    return build(scene("compression = \"" + compression + "\"\n", "[shear]\nmaterial = \"shear.csv\"\n"));
+  };
+  const Model slack = model_with("none"), pushing = model_with("linear");
+  const double gamma = 1e-4;
+  EXPECT_NEAR(shear_energy_J(pushing, gamma), shear_energy_J(slack, gamma), 1e-3 * shear_energy_J(slack, gamma));
+  // Squeezed along the bias: x·(1 − ε/2) − y·ε/2 and y·(1 − ε/2) − x·ε/2 shorten the 45° diagonal by ε.
+  const auto squeeze_energy = [](const Model& model, double eps) {
+    Positions x = model.start;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      const Eigen::Vector3d p = model.start[k];
+      x[k].x() = p.x() - 0.5 * eps * (p.x() + p.y());
+      x[k].y() = p.y() - 0.5 * eps * (p.x() + p.y());
+    }
+    return potential_energy(model, x) - potential_energy(model, model.start);
+  };
+  const double eps = 1e-4, area = 0.1 * 0.05;
+  // The warp and weft (500 N/m, compressed by ε/2, linear both ways here) store 2·½·500·(ε/2)²
+  // per area; the 45° diagonals at half the shear table (40 N/m) add ½·40·ε².
+  EXPECT_NEAR(squeeze_energy(pushing, eps), (0.25 * 500 + 0.5 * 40) * eps * eps * area,
+              2e-3 * (0.25 * 500 + 0.5 * 40) * eps * eps * area);
+}
+
 TEST_F(LabUnits, ShearNeedsExactlyOneSource) {
   const InputError both = error(scene("", "[shear]\nrigidity_N_m = 40\nrigidity_gf_cm_deg = 1\n"));
   EXPECT_NE(std::string(both.what()).find("give one of material"), std::string::npos) << both.what();

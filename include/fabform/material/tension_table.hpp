@@ -38,6 +38,8 @@ class TensionTable {
   /// What a tension-only table gives in compression (compression_response.hpp); B, the fabric's
   /// flexural rigidity (N·m), sets the buckling load. A table with measured compression keeps it.
   void set_compression(Compression mode, double flexural_rigidity_Nm = 0.0);
+  /// The table with every tension multiplied by `factor` (> 0), its own compression response.
+  TensionTable scaled(double factor) const;
   Compression compression() const { return compression_; }
   /// The law a spring of rest length L follows below zero strain.
   CompressionLaw compression_law(double rest_length_m) const;
