@@ -20,6 +20,7 @@
 #include "fabform/output/run_inputs.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
+#include "fabform/solver/grid_continuation.hpp"
 #include "fabform/solver/interrupt.hpp"
 #include "fabform/solver/load_steps.hpp"
 
@@ -186,6 +187,17 @@ int run(const RunArguments& args) {
     take_up_checkpoint(dir, model, *start.recorded, inputs, &state, &so_far);
     finished_steps = read_step_results(dir);
   }
+  // A resumed run goes on from its checkpoint on the scene's own grid: the coarser ones are done.
+  std::vector<ContinuationLevel> continuation;
+  if (!start.recorded && scene.solver.continuation_levels > 0) {
+    Continuation coarse = continue_from_coarse_grids(scene, model);
+    state = std::move(coarse.start);
+    continuation = std::move(coarse.levels);
+    for (const ContinuationLevel& level : continuation)
+      std::fprintf(stderr, "fabform: continuation grid %d x %d divisions: %s, %d iterations, residual %.3g N\n",
+                   level.divisions[0], level.divisions[1], to_string(level.summary.termination).c_str(),
+                   level.summary.iterations, level.summary.residual_N);
+  }
   so_far = begin_summary(scene.solver.name, scene.solver.tolerance_N(), std::move(so_far), scene.solver.tolerance_m());
   std::fprintf(stderr, "fabform: scene %s, %d nodes, %zu bodies, solver %s, e = %g N%s\n",
                scene.name.c_str(), model.node_count(), model.bodies.size(),
@@ -200,7 +212,7 @@ int run(const RunArguments& args) {
     std::vector<std::string> warnings = collect_warnings(model, s, check, 1e-6, of_model);
     if (std::string w = position_tolerance_warning(summary); !w.empty()) warnings.push_back(std::move(w));
     write_results(dir, RunRecord{scene, model, s, summary, check, inputs, std::move(warnings), wall,
-                                 scene.solver.threads, &finished_steps});
+                                 scene.solver.threads, &finished_steps, &continuation});
   };
   Progress progress(stderr);
   RunMonitor monitor(state, so_far, scene.checkpoint, publish, args.quiet ? nullptr : &progress);

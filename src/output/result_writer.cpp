@@ -219,6 +219,17 @@ std::string result_json(const RunRecord& run) {
     constraints.push_back({{"nodes", c.nodes_text}, {"axes", axes_to_string(c.axes)}});
   j["constraints"] = constraints;
   j["warnings"] = run.warnings;
+  if (run.continuation && !run.continuation->empty()) {
+    // The top-level figures stay the scene's own grid's; these are the coarser grids before it.
+    nlohmann::json levels = nlohmann::json::array();
+    for (const ContinuationLevel& level : *run.continuation)
+      levels.push_back({{"divisions", {level.divisions[0], level.divisions[1]}},
+                        {"termination", to_string(level.summary.termination)},
+                        {"iterations", level.summary.iterations},
+                        {"residual_N", number(level.summary.residual_N)},
+                        {"solve_seconds", level.summary.seconds}});
+    j["continuation"] = levels;
+  }
   if (run.model.load_steps() > 0) {
     j["load_steps"] = run.model.load_steps();
     nlohmann::json steps = nlohmann::json::array();

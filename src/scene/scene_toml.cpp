@@ -11,6 +11,7 @@
 
 #include "fabform/model/clamp_frame.hpp"
 #include "fabform/model/wind.hpp"
+#include "fabform/solver/grid_continuation.hpp"
 #include "scene/scene_overrides.hpp"
 #include "scene/toml_table_reader.hpp"
 
@@ -517,13 +518,14 @@ void read_solver(TableReader r, Scene* scene) {
   s.dynamic.time_step_fraction = r.number("time_step_fraction", s.dynamic.time_step_fraction);
   s.dynamic.stretch_limit = r.number("stretch_limit", s.dynamic.stretch_limit);
   s.threads = checked_int(r, "threads", r.integer("threads", 1), 1, 1024);
+  s.continuation_levels = checked_int(r, "continuation_levels", r.integer("continuation_levels", 0), 0, 10);
   std::string field;
   if (const std::string why = s.relax.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (const std::string why = s.newton.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (const std::string why = s.dynamic.invalid_reason(&field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "tolerance_m", "max_iterations", "C", "regularization", "armijo",
                     "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
-                    "stretch_limit", "threads", "friction_creep"});
+                    "stretch_limit", "threads", "friction_creep", "continuation_levels"});
 }
 
 void read_gravity(TableReader r, Scene* scene) {
@@ -676,6 +678,9 @@ Scene read_scene(const toml::table& root, const std::string& path,
   if (scene.clamp.on && scene.solver.name != "newton")
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only newton models, not " + scene.solver.name);
+  std::string continuation_key;
+  if (const std::string why = continuation_refusal(scene, &continuation_key); !why.empty())
+    solver.fail(continuation_key, why);
   read_output(r.table("output", false), &scene);
   r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "pressure", "clamp", "drape",
                     "initial", "solver", "output"});

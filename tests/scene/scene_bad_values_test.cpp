@@ -144,7 +144,8 @@ SceneText base_scene(Base base) {
              {"damping", "0.05"},
              {"time_step_fraction", "0.9"},
              {"stretch_limit", "0.0"},
-             {"threads", "1"}}},
+             {"threads", "1"},
+             {"continuation_levels", "0"}}},
            {"output", "[output]",
             {{"dir", "\"out\""}, {"checkpoint_every_iterations", "100"}, {"checkpoint_every_minutes", "10.0"}}}}};
   const auto gravity = std::find_if(scene.sections.begin(), scene.sections.end(),
@@ -453,6 +454,12 @@ const std::vector<KeyRow>& key_table() {
       {"solver.stretch_limit",           T::number,    lift, A,   R,  A,   R,   _,    "", {{"cap", "100.0", A, kSame}}},
       {"solver.threads",                 T::integer,   lift, A,   R,  R,   R,   _,    "",
        {{"cap", "1024", A, kSame}, {"beyond_cap", "1025", R, kSame}}},
+      // Newton's alone, and not in load steps: the lift's relax and the circle's newton both have a
+      // body path, so only 0 is accepted here; what it accepts is in grid_continuation_test.cpp.
+      {"solver.continuation_levels",     T::integer,   lift, A,   R,  A,   R,   _,    "",
+       {{"one_with_relax", "1", R, "solver.name"}, {"cap", "10", R, "solver.name"}, {"beyond_cap", "11", R, kSame}}},
+      {"solver.continuation_levels",     T::only_extras, circle, _, _, _,  _,   _,    "",
+       {{"one_with_load_steps", "1", R, kSame}}},
       {"output",                         T::table,     lift, A,   _,  _,   _,   _,    "", {}},
       {"output.dir",                     T::text,      lift, A,   _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb\"", R, kSame}}},

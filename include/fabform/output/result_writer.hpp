@@ -16,6 +16,7 @@
 #include "fabform/model/model.hpp"
 #include "fabform/output/run_inputs.hpp"
 #include "fabform/scene/scene.hpp"
+#include "fabform/solver/grid_continuation.hpp"
 #include "fabform/solver/solver_state.hpp"
 #include "fabform/solver/summary.hpp"
 
@@ -40,6 +41,8 @@ struct RunRecord {
   double wall_seconds = 0.0;
   int threads = 1;
   const std::vector<StepResult>* steps = nullptr;  // the finished load steps, in order
+  // The coarser grids solved first (grid_continuation.hpp), coarsest first; null or empty: none.
+  const std::vector<ContinuationLevel>* continuation = nullptr;
 };
 
 /// The results of load step `step`, `run` being its rest (its summary the step's own).

@@ -21,6 +21,9 @@ struct SolverSpec {
   // e relative to the fabric's force scale (force_scale.hpp), when > 0: the run resolves it to
   // newtons once its model is built (set_tolerance_N).
   double tolerance_relative = 0.0;
+  // Grid continuation (grid_continuation.hpp): at most this many coarser grids, each half the
+  // last's divisions, solved first to give this grid its start; 0: none. Newton's alone.
+  int continuation_levels = 0;
 
   /// Sets every solver's e (N).
   void set_tolerance_N(double tolerance_N) {
