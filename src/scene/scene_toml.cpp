@@ -169,7 +169,7 @@ void read_fabric(TableReader& r, Scene* scene) {
 }
 
 // KES-FB1 gives G in gf/(cm·degree); fabform works in N/m per radian.
-constexpr double kNewtonsPerGramForce = 9.80665e-3;
+constexpr double kNewtonsPerGramForce = kStandardGravity_m_s2 * 1e-3;  // a gram-force, by definition
 constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
 
 // The diagonal springs follow a bias table (material) or a measured shear rigidity; one of them.

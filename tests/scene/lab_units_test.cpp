@@ -10,6 +10,7 @@
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
+#include "support/scene_models.hpp"
 #include "support/temp_dir.hpp"
 #include "support/terms.hpp"
 
@@ -28,16 +29,8 @@ class LabUnits : public ::testing::Test {
     return "[fabric]\nsize_m = [0.1, 0.05]\ndivisions = [10, 5]\nwarp = \"" + table + "\"\nweft = \"" + table +
            "\"\n" + fabric_keys + "[[constraint]]\nnodes = \"edge:left\"\n" + extra;
   }
-  Model build(const std::string& text) const { return build_model(load_scene(dir.write("scene.toml", text))); }
-  InputError error(const std::string& text) const {
-    try {
-      build(text);
-    } catch (const InputError& e) {
-      return e;
-    }
-    ADD_FAILURE() << "no error";
-    return InputError({}, "");
-  }
+  Model build(const std::string& text) const { return test::build_scene(dir, text); }
+  InputError error(const std::string& text) const { return test::scene_error(dir, text); }
   test::TempDir dir;
 };
 

@@ -12,6 +12,7 @@
 #include "fabform/solver/relax.hpp"
 #include "support/shapes.hpp"
 #include "support/terms.hpp"
+#include "support/scene_models.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fabform {
@@ -30,18 +31,8 @@ class ModelBuilder : public ::testing::Test {
            "[[body]]\nmesh = \"sphere.obj\"\nunits = \"m\"\n"
            "[initial]\nshape = \"lift\"\nheight_m = " + lift + "\n" + extra;
   }
-  Model build(const std::string& text) const {
-    return build_model(load_scene(dir.write("scene.toml", text)));
-  }
-  InputError error(const std::string& text) const {
-    try {
-      build(text);
-    } catch (const InputError& e) {
-      return e;
-    }
-    ADD_FAILURE() << "no error";
-    return InputError({}, "");
-  }
+  Model build(const std::string& text) const { return test::build_scene(dir, text); }
+  InputError error(const std::string& text) const { return test::scene_error(dir, text); }
   test::TempDir dir;
 };
 
