@@ -186,6 +186,9 @@ std::string result_json(const RunRecord& run) {
   j["position_error_estimate"] = s.solver == "newton" ? "newton_step" : "convergence_rate";
   j["tolerance_m"] = s.tolerance_m > 0.0 ? nlohmann::json(s.tolerance_m) : nlohmann::json(nullptr);
   j["converged_on"] = s.converged() ? nlohmann::json(to_string(s.converged_on)) : nlohmann::json(nullptr);
+  // Newton's linear solve, and its iterations when it is multigrid's conjugate gradients.
+  j["linear_solver"] = s.linear_solver.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.linear_solver);
+  j["linear_iterations"] = s.linear_solver.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.linear_iterations);
   j["wall_seconds"] = run.wall_seconds;
   j["solve_seconds"] = s.seconds;
   j["nodes"] = run.model.node_count();

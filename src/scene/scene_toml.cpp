@@ -507,6 +507,7 @@ void read_solver(TableReader r, Scene* scene) {
   s.newton.max_backtracks = checked_int(
       r, "max_backtracks", r.integer("max_backtracks", s.newton.max_backtracks), 1, 200);
   s.newton.friction_creep = r.number("friction_creep", s.newton.friction_creep);
+  s.newton.linear_solver = r.text("linear_solver", s.newton.linear_solver);
   s.dynamic.areal_density_kg_m2 = r.number("areal_density_kg_m2", s.dynamic.areal_density_kg_m2);
   // Only a fabric without a mass of its own moves with this one; one that has a mass would
   // ignore it without a word.
@@ -525,7 +526,7 @@ void read_solver(TableReader r, Scene* scene) {
   if (const std::string why = s.dynamic.invalid_reason(&field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "tolerance_m", "max_iterations", "C", "regularization", "armijo",
                     "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
-                    "stretch_limit", "threads", "friction_creep", "continuation_levels"});
+                    "stretch_limit", "threads", "friction_creep", "continuation_levels", "linear_solver"});
 }
 
 void read_gravity(TableReader r, Scene* scene) {

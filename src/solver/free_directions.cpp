@@ -63,4 +63,11 @@ Eigen::VectorXd reduced_forces(const FreeDirections& directions,
   return reduced;
 }
 
+std::vector<int> slot_components(const FreeDirections& directions) {
+  std::vector<int> component(static_cast<std::size_t>(directions.unknowns()));
+  for (int k = 0; k + 1 < static_cast<int>(directions.offset.size()); ++k)
+    for (int c = 0; c < directions.count(k); ++c) component[directions.offset[k] + c] = c;
+  return component;
+}
+
 }  // namespace fabform

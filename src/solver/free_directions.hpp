@@ -35,6 +35,10 @@ FreeDirections free_directions(const Model& model, const std::vector<NodeContact
 std::vector<Eigen::Vector3d> node_steps(const FreeDirections& directions,
                                         const Eigen::VectorXd& unknowns);
 
+/// Each unknown's place among its node's slots (0, 1, 2): along x, y, z for a free node, and
+/// for the tangent directions of a node on a body in the order of the axes they came from.
+std::vector<int> slot_components(const FreeDirections& directions);
+
 /// The node forces in Newton's unknowns: each node's force on its free directions.
 Eigen::VectorXd reduced_forces(const FreeDirections& directions,
                                const std::vector<Eigen::Vector3d>& forces);

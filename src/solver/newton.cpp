@@ -11,10 +11,10 @@
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/position_error.hpp"
+#include "linalg/linear_solver.hpp"
 #include "solver/free_directions.hpp"
 #include "solver/lagged_friction.hpp"
 #include "solver/reduced_hessian.hpp"
-#include "solver/sparse_cholesky.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -35,6 +35,8 @@ std::string NewtonOptions::invalid_reason(std::string* field) const {
   if (!(max_backtracks >= 1 && max_backtracks <= 200))
     return bad("max_backtracks", "must be between 1 and 200");
   if (!(friction_creep > 0.0 && friction_creep <= 0.1)) return bad("friction_creep", "must be in (0, 0.1]");
+  if (LinearMethod method; !linear_method_named(linear_solver, &method))
+    return bad("linear_solver", "must be \"auto\", \"cholesky\" or \"multigrid\"");
   return "";
 }
 
@@ -43,6 +45,10 @@ namespace {
 // Beyond this regularisation (relative to the mean diagonal) the step is a vanishing gradient
 // step; a matrix that still fails is broken, not ill-conditioned.
 constexpr double kMaxRegularization = 1e8;
+
+// The range of an inexact Newton step's relative tolerance η (NewtonStep::forcing).
+constexpr double kMaxForcing = 0.1;
+constexpr double kMinForcing = 1e-8;
 
 std::vector<Eigen::Vector3d> node_forces(const Model& model, const std::vector<Eigen::Vector3d>& x) {
   std::vector<Eigen::Vector3d> forces(x.size());
@@ -94,7 +100,9 @@ class NewtonStep {
         state_(state),
         options_(options),
         creep_m_(model.has_friction() ? friction_creep_m(model.fabric, options.friction_creep) : 0.0),
-        mu_(state.regularization > 0.0 ? state.regularization : options.regularization) {}
+        mu_(state.regularization > 0.0 ? state.regularization : options.regularization) {
+    linear_method_named(options.linear_solver, &linear_method_);
+  }
 
   /// The Newton step from the current state (nodes its force pulls off a body are released
   /// first, as the step would); none when the matrix gives no descent direction.
@@ -105,8 +113,9 @@ class NewtonStep {
     p.forces = with_friction(model_, stored, p.friction, state_.x);
     const FreeDirections directions = free_directions(model_, state_.contact);
     if (directions.used == 0) return std::nullopt;
+    const Eigen::VectorXd f = reduced_forces(directions, p.forces);
     const auto step = solve(reduced_hessian(model_, state_.x, directions, p.friction.empty() ? nullptr : &p.friction),
-                            reduced_forces(directions, p.forces), directions.used);
+                            f, directions, forcing(f.norm()));
     if (!step) return std::nullopt;
     p.steps = node_steps(directions, *step);
     return p;
@@ -133,18 +142,43 @@ class NewtonStep {
     return true;
   }
 
+  /// The linear solver the steps were solved with (none before the first).
+  const LinearSolver* linear_solver() const { return linear_.get(); }
+
  private:
-  // Solves (H + μ·s·I) δ = f, s the mean diagonal of H over the `used` slots (those with a
-  // direction); raises μ until δ is a descent direction.
-  std::optional<Eigen::VectorXd> solve(const Eigen::SparseMatrix<double>& h,
-                                       const Eigen::VectorXd& f, int used) {
-    const double mean = h.diagonal().sum() / used;
+  // Inexact Newton (Eisenstat & Walker 1996, choice 2): an iterative solve need only cut the
+  // step's residual to η‖f‖, η = 0.9 (‖f‖/‖f_last‖)², loose far from the rest and tightening
+  // as the forces fall, which keeps the convergence superlinear without over-solving early.
+  double forcing(double force_norm) {
+    double eta = kMaxForcing;
+    if (last_force_norm_ > 0.0) {
+      const double ratio = force_norm / last_force_norm_;
+      eta = 0.9 * ratio * ratio;
+      // Not down by more than the last η allows, lest one lucky step over-tighten the next.
+      const double safeguard = 0.9 * forcing_ * forcing_;
+      if (safeguard > 0.1) eta = std::max(eta, safeguard);
+      eta = std::clamp(eta, kMinForcing, kMaxForcing);
+    }
+    last_force_norm_ = force_norm;
+    forcing_ = eta;
+    return eta;
+  }
+
+  // Solves (H + μ·s·I) δ = f, s the mean diagonal of H over the slots with a direction, to the
+  // relative tolerance `eta` when the solve is iterative; raises μ until δ is a descent
+  // direction.
+  std::optional<Eigen::VectorXd> solve(const Eigen::SparseMatrix<double>& h, const Eigen::VectorXd& f,
+                                       const FreeDirections& directions, double eta) {
+    if (!linear_)
+      linear_ = make_linear_solver(concrete_method(linear_method_, directions.unknowns()));
+    const double mean = h.diagonal().sum() / directions.used;
     const double scale = mean > 0.0 ? mean : 1.0;
+    const std::vector<int> component = slot_components(directions);
     for (; mu_ <= kMaxRegularization; mu_ *= 10.0) {
       Eigen::SparseMatrix<double> m = h;
       m.diagonal().array() += mu_ * scale;
-      if (!cholesky_.factorize(std::move(m))) continue;
-      Eigen::VectorXd delta = cholesky_.solve(f);
+      if (!linear_->set_matrix(std::move(m), component)) continue;
+      Eigen::VectorXd delta = linear_->solve(f, eta);
       if (delta.allFinite() && delta.dot(f) > 0.0) return delta;
     }
     mu_ = kMaxRegularization;
@@ -194,8 +228,18 @@ class NewtonStep {
   const NewtonOptions& options_;
   double creep_m_;  // friction's creep length ε (0 without friction)
   double mu_;  // current regularisation, relative to the mean diagonal
-  SparseCholesky cholesky_;
+  LinearMethod linear_method_;
+  std::unique_ptr<LinearSolver> linear_;  // chosen at the first step, by its unknowns
+  double last_force_norm_ = 0.0;  // ‖f‖₂ of the last step proposed (0: none yet)
+  double forcing_ = kMaxForcing;  // its η
 };
+
+void record_linear_solver(Summary& summary, const NewtonStep& step) {
+  if (const LinearSolver* linear = step.linear_solver()) {
+    summary.linear_solver = to_string(linear->method());
+    summary.linear_iterations = linear->iterations();
+  }
+}
 
 std::string stall_message(const Summary& s) {
   std::ostringstream text;
@@ -245,6 +289,7 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
       summary.termination = Termination::not_converged;
       summary.seconds = elapsed();
       summary.message = stall_message(summary);
+      record_linear_solver(summary, step);
       return summary;
     }
     const double seconds = elapsed();
@@ -258,6 +303,7 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
   }
   summary.seconds = elapsed();
   summary.message = stop_message(summary);
+  record_linear_solver(summary, step);
   return summary;
 }
 

@@ -141,6 +141,7 @@ SceneText base_scene(Base base) {
              {"armijo", "1e-4"},
              {"max_backtracks", "60"},
              {"friction_creep", "1e-3"},
+             {"linear_solver", "\"auto\""},
              {"damping", "0.05"},
              {"time_step_fraction", "0.9"},
              {"stretch_limit", "0.0"},
@@ -446,6 +447,9 @@ const std::vector<KeyRow>& key_table() {
        {{"cap", "200", A, kSame}, {"beyond_cap", "201", R, kSame}}},
       {"solver.friction_creep",          T::number,    lift, A,   R,  R,   R,   _,    "",
        {{"cap", "0.1", A, kSame}, {"beyond_cap", "0.11", R, kSame}}},
+      {"solver.linear_solver",           T::choice,    lift, A,   _,  _,   _,   R,    "",
+       {{"upper_case", "\"Multigrid\"", R, kSame}, {"lu", "\"lu\"", R, kSame},
+        {"multigrid", "\"multigrid\"", A, kSame}}},
       // Dynamic's mass for a fabric without one: every base weighs its fabric, beside which the
       // key is refused (lab_units_test.cpp); its range is checked in scene_toml_test.cpp.
       {"solver.areal_density_kg_m2",     T::only_extras, lift, _, _,  _,   _,   _,    "", {}},

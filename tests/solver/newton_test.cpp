@@ -19,10 +19,12 @@ using test::fabric_over_sphere;
 using test::lift_interior;
 using test::max_distance;
 
-SolverState run_newton(const Model& model, double tolerance_N, Summary* summary) {
+SolverState run_newton(const Model& model, double tolerance_N, Summary* summary,
+                       const std::string& linear_solver = "auto") {
   SolverState state = SolverState::at_start(model);
   NewtonOptions options;
   options.tolerance_N = tolerance_N;
+  options.linear_solver = linear_solver;
   *summary = newton(model, state, options);
   return state;
 }
@@ -65,6 +67,8 @@ TEST(NewtonOptions, RejectsBadValues) {
   EXPECT_EQ(field_of(o), "armijo");
   o = {}, o.max_backtracks = 0;
   EXPECT_EQ(field_of(o), "max_backtracks");
+  o = {}, o.linear_solver = "lu";
+  EXPECT_EQ(field_of(o), "linear_solver");
   Model model = clamped_fabric(2);
   SolverState state = SolverState::at_start(model);
   o = {}, o.tolerance_N = std::nan("");
@@ -92,6 +96,21 @@ TEST(Newton, FabricOverSphereAgreesWithRelax) {
   expect_converged_outside(model, state, summary);
   EXPECT_GT(summary.history.back().contact_nodes, 10);
   expect_same_rest(model, state, run_relax(model, 1e-8));
+}
+
+// Inexact Newton, its steps from multigrid's conjugate gradients, reaches the rest the exact
+// steps reach; the summary says which solve each run used.
+TEST(Newton, MultigridStepsReachTheCholeskyRest) {
+  const Model model = fabric_over_sphere(0.02);
+  Summary exact, inexact;
+  const SolverState by_cholesky = run_newton(model, 1e-9, &exact, "cholesky");
+  const SolverState by_multigrid = run_newton(model, 1e-9, &inexact, "multigrid");
+  expect_converged_outside(model, by_multigrid, inexact);
+  EXPECT_EQ(exact.linear_solver, "cholesky");
+  EXPECT_EQ(exact.linear_iterations, 0);
+  EXPECT_EQ(inexact.linear_solver, "multigrid");
+  EXPECT_GE(inexact.linear_iterations, inexact.iterations);
+  expect_same_rest(model, by_multigrid, by_cholesky);
 }
 
 // Every interior node lifted 20 cm over a 10 cm fabric: the springs from the perimeter to the

@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "solver/cholmod_factor.hpp"
+#include "linalg/cholmod_factor.hpp"
 
 namespace fabform::test {
 

@@ -3,8 +3,9 @@
 // potential energy Π(x) = Σ w·L·∫₀^ε T − Σ f·x (stretch, and constant loads such as its weight,
 // which add nothing to the Hessian). Each spring's stiffness is projected positive
 // semi-definite; the linear system, in each node's free directions (locked axes and the normal
-// of the body a node presses on eliminated), is solved by a sparse Cholesky factorisation (CHOLMOD)
-// regularised by μ·I; a backtracking line search on the energy moves the nodes as relax does
+// of the body a node presses on eliminated), regularised by μ·I, is solved by a sparse Cholesky
+// factorisation (CHOLMOD) or, on large grids, by conjugate gradients preconditioned by algebraic
+// multigrid (hypre's BoomerAMG) to a tolerance that tightens as the forces fall (inexact Newton); a backtracking line search on the energy moves the nodes as relax does
 // (a node that would enter a body stops on it, a node on a body slides and is projected back,
 // and leaves when its force points out). Progress is seed 003's ‖V‖∞, as relax measures it.
 #include <string>
@@ -30,6 +31,10 @@ struct NewtonOptions {
   // less than ε from where it landed is stuck (friction smoothed as in incremental potential
   // contact, coulomb_friction.hpp).
   double friction_creep = 1e-2;
+  // The linear solve of each step: "cholesky" (exact), "multigrid" (conjugate gradients
+  // preconditioned by algebraic multigrid, to an inexact Newton tolerance), or "auto": the
+  // factorisation below the size where multigrid is the faster (linalg/linear_solver.hpp).
+  std::string linear_solver = "auto";
 
   /// Why the options cannot be used, or "" when they can; `field` gets the option's name.
   std::string invalid_reason(std::string* field = nullptr) const;

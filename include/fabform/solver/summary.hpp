@@ -42,6 +42,10 @@ struct Summary {
   // (position_error.hpp); NaN when not estimated (a broken or interrupted run).
   double position_error_m = std::numeric_limits<double>::quiet_NaN();
   double seconds = 0.0;
+  // Newton's linear solve: "cholesky" or "multigrid" ("" for the other solvers), and the
+  // multigrid's conjugate-gradient iterations over the run (since it resumed, for a resumed one).
+  std::string linear_solver;
+  long linear_iterations = 0;
   int worst_node = -1;  // where ‖V‖∞ is attained (or the first broken node)
   std::vector<IterationRecord> history;
 

@@ -1,4 +1,4 @@
-#include "solver/substructured_cholesky.hpp"
+#include "linalg/substructured_cholesky.hpp"
 
 #include <algorithm>
 #include <cstddef>

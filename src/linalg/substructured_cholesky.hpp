@@ -11,7 +11,7 @@
 
 #include <Eigen/Core>
 
-#include "solver/cholmod_factor.hpp"
+#include "linalg/cholmod_factor.hpp"
 
 namespace fabform {
 

@@ -1,6 +1,6 @@
 // Newton's sparse Cholesky: the same answer, bit for bit, on one thread and on two, whether it
 // splits the matrix or not; a new pattern is analysed anew.
-#include "solver/sparse_cholesky.hpp"
+#include "linalg/sparse_cholesky.hpp"
 
 #include <gtest/gtest.h>
 

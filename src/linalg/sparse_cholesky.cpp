@@ -1,4 +1,4 @@
-#include "solver/sparse_cholesky.hpp"
+#include "linalg/sparse_cholesky.hpp"
 
 #include <algorithm>
 
@@ -6,8 +6,8 @@
 #include <omp.h>
 #endif
 
-#include "solver/cholmod_factor.hpp"
-#include "solver/substructured_cholesky.hpp"
+#include "linalg/cholmod_factor.hpp"
+#include "linalg/substructured_cholesky.hpp"
 
 namespace fabform {
 

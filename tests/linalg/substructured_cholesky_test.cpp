@@ -1,7 +1,7 @@
 // The two-sided Cholesky: the split it makes, its solve against CHOLMOD's on the whole matrix,
 // and a matrix that fails to be positive definite on either side or only in the separator's
 // complement.
-#include "solver/substructured_cholesky.hpp"
+#include "linalg/substructured_cholesky.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The CHOLMOD wrapper: its solve against a dense factorisation, its four solve steps against
 // its solve, the trailing block against a dense factor, and the bisection's separator.
-#include "solver/cholmod_factor.hpp"
+#include "linalg/cholmod_factor.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "solver/cholmod_factor.hpp"
+#include "linalg/cholmod_factor.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,0 +1,47 @@
+#pragma once
+// Newton's linear solve behind one interface: a sparse Cholesky factorisation (sparse_cholesky.hpp),
+// exact, whose time and memory grow as the unknowns' 1.5th power on a fabric grid; or conjugate
+// gradients preconditioned by algebraic multigrid (amg_conjugate_gradient.hpp), to a tolerance,
+// whose cost grows linearly. `automatic` takes the factorisation on grids small enough for it to
+// be the faster (measured: tools/bench_solvers.py --scale) and multigrid beyond.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace fabform {
+
+enum class LinearMethod { automatic, cholesky, multigrid };
+
+/// "auto", "cholesky", "multigrid"; the names a scene's solver.linear_solver takes.
+std::string to_string(LinearMethod method);
+/// The method a name gives; false for an unknown name.
+bool linear_method_named(const std::string& name, LinearMethod* method);
+
+/// From this many unknowns `automatic` takes multigrid.
+constexpr int kMultigridMinUnknowns = 1'000'000;
+
+/// The method `method` stands for with this many unknowns (itself unless automatic).
+LinearMethod concrete_method(LinearMethod method, int unknowns);
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  /// Takes a symmetric matrix by its lower triangle, every diagonal entry stored; `component`
+  /// gives each unknown's place in its node's displacement (0, 1, 2). False when the matrix is
+  /// found not to be positive definite.
+  virtual bool set_matrix(Eigen::SparseMatrix<double> lower, const std::vector<int>& component) = 0;
+  /// x with A x = b: exactly, or with ‖b − A x‖₂ ≤ relative_tolerance · ‖b‖₂ for an iterative
+  /// method, whose every iterate is a descent direction for ½x'Ax − b'x.
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b, double relative_tolerance) = 0;
+  virtual LinearMethod method() const = 0;
+  /// Inner iterations over every solve so far (0 for a direct method).
+  virtual long iterations() const = 0;
+};
+
+/// A solver of a concrete method (not automatic).
+std::unique_ptr<LinearSolver> make_linear_solver(LinearMethod method);
+
+}  // namespace fabform

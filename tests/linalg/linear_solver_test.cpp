@@ -1,0 +1,59 @@
+// Newton's choice of linear solve: the names a scene gives, the size at which `auto` turns to
+// multigrid, and both methods solving the same system to the accuracy each promises.
+#include "linalg/linear_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include "support/grid_stiffness.hpp"
+
+namespace fabform {
+namespace {
+
+TEST(LinearSolver, NamesRoundTrip) {
+  for (LinearMethod m : {LinearMethod::automatic, LinearMethod::cholesky, LinearMethod::multigrid}) {
+    LinearMethod read = LinearMethod::automatic;
+    ASSERT_TRUE(linear_method_named(to_string(m), &read)) << to_string(m);
+    EXPECT_EQ(read, m);
+  }
+  LinearMethod unchanged = LinearMethod::cholesky;
+  EXPECT_FALSE(linear_method_named("lu", &unchanged));
+  EXPECT_FALSE(linear_method_named("Multigrid", &unchanged));
+  EXPECT_EQ(unchanged, LinearMethod::cholesky);
+}
+
+TEST(LinearSolver, AutoTurnsToMultigridAtItsSize) {
+  EXPECT_EQ(concrete_method(LinearMethod::automatic, kMultigridMinUnknowns - 1), LinearMethod::cholesky);
+  EXPECT_EQ(concrete_method(LinearMethod::automatic, kMultigridMinUnknowns), LinearMethod::multigrid);
+  EXPECT_EQ(concrete_method(LinearMethod::cholesky, 1 << 30), LinearMethod::cholesky);
+  EXPECT_EQ(concrete_method(LinearMethod::multigrid, 3), LinearMethod::multigrid);
+  EXPECT_THROW(make_linear_solver(LinearMethod::automatic), std::invalid_argument);
+}
+
+TEST(LinearSolver, BothMethodsSolveTheSameSystem) {
+  const Eigen::SparseMatrix<double> lower = test::grid_stiffness(16, 0.01);
+  const Eigen::SparseMatrix<double> a = test::symmetric(lower);
+  std::vector<int> component(static_cast<std::size_t>(lower.rows()));
+  for (std::size_t i = 0; i < component.size(); ++i) component[i] = static_cast<int>(i % 3);
+  Eigen::VectorXd b(lower.rows());
+  for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = std::sin(0.1 * static_cast<double>(i));
+  for (LinearMethod m : {LinearMethod::cholesky, LinearMethod::multigrid}) {
+    const std::unique_ptr<LinearSolver> solver = make_linear_solver(m);
+    EXPECT_EQ(solver->method(), m);
+    ASSERT_TRUE(solver->set_matrix(lower, component));
+    const double tolerance = 1e-5;
+    const Eigen::VectorXd x = solver->solve(b, tolerance);
+    const double residual = (b - a * x).norm() / b.norm();
+    EXPECT_LE(residual, m == LinearMethod::cholesky ? 1e-12 : tolerance) << to_string(m);
+    EXPECT_EQ(solver->iterations() > 0, m == LinearMethod::multigrid) << to_string(m);
+  }
+}
+
+TEST(LinearSolver, CholeskyFindsAnIndefiniteMatrix) {
+  Eigen::SparseMatrix<double> lower = test::grid_stiffness(5, 0.01);
+  lower.coeffRef(7, 7) = -1.0;
+  const std::unique_ptr<LinearSolver> solver = make_linear_solver(LinearMethod::cholesky);
+  EXPECT_FALSE(solver->set_matrix(lower, std::vector<int>(static_cast<std::size_t>(lower.rows()), 0)));
+}
+
+}  // namespace
+}  // namespace fabform
