@@ -8,7 +8,7 @@ could not measure: a size that does not finish within --timeout is reported as o
 
 What it does: for each N in --sizes (nodes a side; default 101,201,401,1001) it runs
 `fabform run scenes/dome.toml --set fabric.divisions=[N-1,N-1] --solver newton --tol 1e-6`
-up to --runs times (again only while the size's runs so far and one more fit in --timeout:
+(with `--set solver.linear_solver=` --linear-solver: auto, cholesky or multigrid) up to --runs times (again only while the size's runs so far and one more fit in --timeout:
 several runs where affordable, medians), and records per N: wall seconds (result.json's
 wall_seconds, the whole run) and solve seconds (solve_seconds), medians over the runs;
 iterations; peak memory (the largest resident size of the runs, from wait4's rusage); and
@@ -38,8 +38,9 @@ import bench_solvers as bench  # noqa: E402
 SIZES = "101,201,401,1001"
 TOLERANCE_N = 1e-6     # the dome scene's e
 SOLVER = "newton"
-COLUMNS = ["N", "nodes", "status", "runs", "wall_s", "solve_s", "iterations", "peak_MiB",
-           "position_error_m", "measured_distance_m", "note"]
+LINEAR_SOLVERS = ("auto", "cholesky", "multigrid")
+COLUMNS = ["N", "nodes", "status", "runs", "wall_s", "solve_s", "iterations", "linear_solver", "cg_iterations",
+           "peak_MiB", "position_error_m", "measured_distance_m", "note"]
 
 
 def fail(message: str) -> None:
@@ -68,6 +69,8 @@ def parse_args(argv: list) -> argparse.Namespace:
     p.add_argument("--timeout", type=float, default=600.0, help="seconds for each size's runs (600)")
     p.add_argument("--runs", type=int, default=3, help="runs a size at most, for the medians (3)")
     p.add_argument("--threads", type=int, default=1, help="threads of each run (1)")
+    p.add_argument("--linear-solver", default="auto",
+                   help="newton's linear solve, solver.linear_solver: " + ", ".join(LINEAR_SOLVERS) + " (auto)")
     p.add_argument("--reference-max", type=int, default=201,
                    help="largest N solved to --reference-tol to measure the distance (201)")
     p.add_argument("--reference-tol", type=float, default=1e-11, help="newton's e for the reference (1e-11)")
@@ -80,6 +83,8 @@ def parse_args(argv: list) -> argparse.Namespace:
         fail("--runs: at least 1")
     if args.threads < 1:
         fail("--threads: at least 1")
+    if args.linear_solver not in LINEAR_SOLVERS:
+        fail(f"--linear-solver: '{args.linear_solver}' is not one of " + ", ".join(LINEAR_SOLVERS))
     if not (math.isfinite(args.reference_tol) and args.reference_tol > 0):
         fail("--reference-tol: must be a positive force")
     return args
@@ -111,19 +116,20 @@ def time_ratio(rows: list, key: str, big: int = 1001, small: int = 201) -> tuple
 
 # --- the runs --------------------------------------------------------------------------------
 
-def command(n: int, tolerance: float, threads: int, out: pathlib.Path) -> list:
+def command(n: int, tolerance: float, args, out: pathlib.Path) -> list:
     return [str(bench.FABFORM), "run", str(bench.scene_path("dome")), "--out", str(out), "--solver", SOLVER,
-            "--tol", repr(tolerance), "--threads", str(threads), "--max-iter", str(bench.MAX_ITERATIONS),
-            "--set", f"fabric.divisions=[{n - 1},{n - 1}]", "--quiet"]
+            "--tol", repr(tolerance), "--threads", str(args.threads), "--max-iter", str(bench.MAX_ITERATIONS),
+            "--set", f"fabric.divisions=[{n - 1},{n - 1}]",
+            "--set", f"solver.linear_solver={args.linear_solver}", "--quiet"]
 
 
-def run_once(n: int, tolerance: float, threads: int, out: pathlib.Path, budget: float) -> dict:
+def run_once(n: int, tolerance: float, args, out: pathlib.Path, budget: float) -> dict:
     """One fabform run within `budget` seconds: its figures, and its positions when it finished."""
     if out.exists():
         shutil.rmtree(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     log = out.parent / f"{out.name}.stderr.txt"
-    code, peak, wall = bench.wait_within(bench.launch(command(n, tolerance, threads, out), log), budget)
+    code, peak, wall = bench.wait_within(bench.launch(command(n, tolerance, args, out), log), budget)
     if code is None:
         return {"status": "over the timeout", "peak_MiB": peak, "note": f"killed after {budget:g} s"}
     result_file = out / "result.json"
@@ -132,6 +138,7 @@ def run_once(n: int, tolerance: float, threads: int, out: pathlib.Path, budget: 
         return {"status": "failed", "peak_MiB": peak, "note": bench.last_line(log) or f"exit {code}"}
     return {"status": bench.status_of(code, result), "peak_MiB": peak, "wall_s": result["wall_seconds"],
             "solve_s": result["solve_seconds"], "iterations": result["iterations"], "nodes": result["nodes"],
+            "linear_solver": result.get("linear_solver"), "cg_iterations": result.get("linear_iterations"),
             "position_error_m": result.get("position_error_m"), "positions": bench.read_positions(out), "note": ""}
 
 
@@ -142,7 +149,7 @@ def measure_size(n: int, args, out: pathlib.Path) -> dict:
         left = args.timeout - spent
         if runs and runs[-1]["wall_s"] > left:  # one more would not fit in the timeout
             break
-        run = run_once(n, TOLERANCE_N, args.threads, out / f"N{n}" / f"run{len(runs) + 1}", left)
+        run = run_once(n, TOLERANCE_N, args, out / f"N{n}" / f"run{len(runs) + 1}", left)
         print(f"  N={n} run {len(runs) + 1}: {run['status']}, {run.get('wall_s', '-')} s", file=sys.stderr)
         if run["status"] != "converged":
             if not runs:
@@ -154,7 +161,8 @@ def measure_size(n: int, args, out: pathlib.Path) -> dict:
     return {"N": n, "nodes": first["nodes"], "status": "converged", "runs": len(runs),
             "wall_s": statistics.median(r["wall_s"] for r in runs),
             "solve_s": statistics.median(r["solve_s"] for r in runs),
-            "iterations": first["iterations"], "peak_MiB": max(r["peak_MiB"] for r in runs),
+            "iterations": first["iterations"], "linear_solver": first["linear_solver"],
+            "cg_iterations": first["cg_iterations"], "peak_MiB": max(r["peak_MiB"] for r in runs),
             "position_error_m": first["position_error_m"], "positions": first["positions"], "note": ""}
 
 
@@ -162,7 +170,7 @@ def add_measured_distance(row: dict, args, out: pathlib.Path) -> None:
     """The first run's largest node distance from newton at --reference-tol, where affordable."""
     if row["status"] != "converged" or row["N"] > args.reference_max:
         return
-    ref = run_once(row["N"], args.reference_tol, args.threads, out / f"N{row['N']}" / "reference", args.timeout)
+    ref = run_once(row["N"], args.reference_tol, args, out / f"N{row['N']}" / "reference", args.timeout)
     if ref.get("positions") is None:
         row["note"] = f"reference {ref['status']}"
         return
@@ -197,13 +205,14 @@ def ratio_cell(row: dict) -> str:
 
 
 def table(rows: list) -> list:
-    lines = ["| N | nodes | status | runs | wall s (median) | solve s (median) | iterations | peak MiB "
-             "| position_error_m | measured distance (m) | estimate / measured | note |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| N | nodes | status | runs | wall s (median) | solve s (median) | iterations | linear solve "
+             "| CG iterations | peak MiB | position_error_m | measured distance (m) | estimate / measured | note |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append("| " + " | ".join([
             str(r["N"]), str(r["nodes"]), r["status"], str(r["runs"]), cell(r, "wall_s", ".3g"),
-            cell(r, "solve_s", ".3g"), cell(r, "iterations", "d"), cell(r, "peak_MiB", ".0f"),
+            cell(r, "solve_s", ".3g"), cell(r, "iterations", "d"), r.get("linear_solver") or "",
+            cell(r, "cg_iterations", "d"), cell(r, "peak_MiB", ".0f"),
             cell(r, "position_error_m", ".2e"), cell(r, "measured_distance_m", ".2e"), ratio_cell(r),
             r.get("note", "")]) + " |")
     return lines
@@ -226,7 +235,7 @@ def fits(rows: list) -> list:
 def report(rows: list, args, load_before: tuple, load_after: tuple) -> str:
     head = ["# Dome scaling, newton to 1e-6 N", "",
             f"`bench_solvers.py {' '.join(sys.argv[1:])}`, {bench.fabform_version()}, {os.cpu_count()} cores, "
-            f"{args.threads} thread(s); timeout {args.timeout:g} s a size; load average "
+            f"{args.threads} thread(s), linear solve {args.linear_solver}; timeout {args.timeout:g} s a size; load average "
             f"{load_before[0]:.2f} before, {load_after[0]:.2f} after (a shared machine: timings under load). "
             f"Distances measured from newton at {args.reference_tol:g} N where N <= {args.reference_max}.", ""]
     return "\n".join(head + table(rows) + [""] + fits(rows)) + "\n"
