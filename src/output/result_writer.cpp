@@ -23,6 +23,7 @@
 #include "fabform/io/png_image.hpp"
 #include "fabform/output/print_map_files.hpp"
 #include "fabform/output/results_folder.hpp"
+#include "fabform/solver/solver_registry.hpp"
 
 namespace fabform {
 namespace {
@@ -183,7 +184,7 @@ std::string result_json(const RunRecord& run) {
   // How far the answer is from the exact rest, estimated (position_error.hpp), and which
   // tolerance stopped a converged run.
   j["position_error_m"] = number(s.position_error_m);
-  j["position_error_estimate"] = s.solver == "newton" ? "newton_step" : "convergence_rate";
+  j["position_error_estimate"] = solver_named(s.solver).position_error_estimate;
   j["tolerance_m"] = s.tolerance_m > 0.0 ? nlohmann::json(s.tolerance_m) : nlohmann::json(nullptr);
   j["converged_on"] = s.converged() ? nlohmann::json(to_string(s.converged_on)) : nlohmann::json(nullptr);
   j["wall_seconds"] = run.wall_seconds;

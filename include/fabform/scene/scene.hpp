@@ -162,7 +162,4 @@ struct Scene {
   CheckpointSpec checkpoint;
 };
 
-/// The solver names fabform knows, in the order `fabform solvers` lists them.
-const std::vector<std::string>& solver_names();
-
 }  // namespace fabform

@@ -13,7 +13,7 @@
 namespace fabform {
 
 struct SolverSpec {
-  std::string name = "relax";  // one of solver_names()
+  std::string name = "relax";  // a solver of solver_registry.hpp
   RelaxOptions relax;          // used when name is "relax"
   NewtonOptions newton;        // used when name is "newton"
   DynamicOptions dynamic;      // used when name is "dynamic"
@@ -26,28 +26,20 @@ struct SolverSpec {
   int continuation_levels = 0;
 
   /// Sets every solver's e (N).
-  void set_tolerance_N(double tolerance_N) {
-    relax.tolerance_N = newton.tolerance_N = dynamic.tolerance_N = tolerance_N;
-  }
+  void set_tolerance_N(double tolerance_N);
 
   /// Sets every solver's distance tolerance (m; 0: none).
-  void set_tolerance_m(double tolerance_m) {
-    relax.tolerance_m = newton.tolerance_m = dynamic.tolerance_m = tolerance_m;
-  }
+  void set_tolerance_m(double tolerance_m);
 
-  /// e of the solver the spec names.
-  double tolerance_N() const {
-    if (name == "newton") return newton.tolerance_N;
-    if (name == "dynamic") return dynamic.tolerance_N;
-    return relax.tolerance_N;
-  }
+  /// Sets every solver's iteration cap.
+  void set_max_iterations(int max_iterations);
+
+  /// e of the solver the spec names (N). The tolerances throw std::invalid_argument for a name
+  /// fabform does not know (solver_registry.hpp).
+  double tolerance_N() const;
 
   /// The distance tolerance of the solver the spec names (m; 0: none).
-  double tolerance_m() const {
-    if (name == "newton") return newton.tolerance_m;
-    if (name == "dynamic") return dynamic.tolerance_m;
-    return relax.tolerance_m;
-  }
+  double tolerance_m() const;
 };
 
 /// Runs the named solver from `state`, going on from `resumed` when it is a checkpoint's. Throws std::invalid_argument for an unknown name or
