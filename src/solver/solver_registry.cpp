@@ -3,8 +3,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "fabform/solver/solve.hpp"
-
 namespace fabform {
 namespace {
 
@@ -18,6 +16,17 @@ SolverEntry entry(const char* name, const char* position_error_estimate) {
           [](SolverSpec& spec, const StopSettings& stop) { set_stop_settings(spec.*kOptions, stop); },
           [](const SolverSpec& spec, std::string* field) { return (spec.*kOptions).invalid_reason(field); },
           position_error_estimate};
+}
+
+// Sets one stop setting in every solver's options, so that a scene stays the same whichever
+// solver --solver names.
+template <class Value>
+void set_in_every_solver(SolverSpec& spec, Value StopSettings::*setting, Value value) {
+  for (const SolverEntry& solver : solvers()) {
+    StopSettings stop = solver.stop_settings(spec);
+    stop.*setting = value;
+    solver.set_stop_settings(spec, stop);
+  }
 }
 
 }  // namespace
@@ -41,5 +50,21 @@ const SolverEntry& solver_named(const std::string& name) {
   if (const SolverEntry* solver = find_solver(name)) return *solver;
   throw std::invalid_argument("unknown solver '" + name + "'");
 }
+
+void SolverSpec::set_tolerance_N(double tolerance_N) {
+  set_in_every_solver(*this, &StopSettings::tolerance_N, tolerance_N);
+}
+
+void SolverSpec::set_tolerance_m(double tolerance_m) {
+  set_in_every_solver(*this, &StopSettings::tolerance_m, tolerance_m);
+}
+
+void SolverSpec::set_max_iterations(int max_iterations) {
+  set_in_every_solver(*this, &StopSettings::max_iterations, max_iterations);
+}
+
+double SolverSpec::tolerance_N() const { return solver_named(name).stop_settings(*this).tolerance_N; }
+
+double SolverSpec::tolerance_m() const { return solver_named(name).stop_settings(*this).tolerance_m; }
 
 }  // namespace fabform

@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 
 namespace fabform {

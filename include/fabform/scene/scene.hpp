@@ -16,7 +16,7 @@
 #include "fabform/geometry/tool_path.hpp"
 #include "fabform/material/compression_response.hpp"
 #include "fabform/model/gravity.hpp"
-#include "fabform/solver/solve.hpp"
+#include "fabform/solver/solver_registry.hpp"
 
 namespace fabform {
 
