@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "fabform/scene/scene.hpp"
+#include "fabform/solver/solver_registry.hpp"
 
 namespace {
 
@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   if (args[0] == "study") return fabform::cli::study_command(rest);
   if (args[0] == "predistort") return fabform::cli::predistort_command(rest);
   if (args[0] == "solvers" && rest.empty()) {
-    for (const auto& name : fabform::solver_names()) std::printf("%s\n", name.c_str());
+    for (const auto& solver : fabform::solvers()) std::printf("%s\n", solver.name.c_str());
     return fabform::cli::kExitDone;
   }
   if (args[0] == "--version") {

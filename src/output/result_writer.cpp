@@ -8,21 +8,17 @@
 
 #include <nlohmann/json.hpp>
 
-#include "fabform/analysis/cell_deformation.hpp"
-#include "fabform/analysis/contact_pressure.hpp"
 #include "fabform/analysis/drape_figures.hpp"
-#include "fabform/analysis/locking_angle.hpp"
 #include "fabform/analysis/print_map.hpp"
 #include "fabform/error.hpp"
 #include "fabform/model/force_scale.hpp"
-#include "fabform/model/spring_strains.hpp"
 #include "fabform/output/checkpoint.hpp"
-#include "fabform/output/draw_in.hpp"
-#include "fabform/output/fabric_figures.hpp"
 #include "fabform/io/obj_text.hpp"
 #include "fabform/io/png_image.hpp"
 #include "fabform/output/print_map_files.hpp"
 #include "fabform/output/results_folder.hpp"
+#include "fabform/output/run_figures.hpp"
+#include "fabform/solver/solver_registry.hpp"
 
 namespace fabform {
 namespace {
@@ -104,30 +100,9 @@ nlohmann::json drape_json(const RunRecord& run) {
   }
 }
 
-// The locking angle a cell's shear is judged by: the shear table's when it has one (it
-// stiffens), else the scene's fabric.locking_angle_deg, else CellDeformationOptions' default.
-std::pair<CellDeformationOptions, const char*> deformation_options(const RunRecord& run) {
-  CellDeformationOptions options;
-  if (run.model.shear)
-    if (const std::optional<double> locking = locking_angle_deg(*run.model.shear); locking && *locking > 0.0 && *locking < 90.0) {
-      options.locking_angle_deg = *locking;
-      return {options, "shear table"};
-    }
-  if (run.scene.locking_angle_deg) {
-    options.locking_angle_deg = *run.scene.locking_angle_deg;
-    return {options, "scene"};
-  }
-  return {options, "default"};
-}
-
-CellDeformation deformation_of(const RunRecord& run) {
-  return cell_deformation(run.model, run.state.x, deformation_options(run).first);
-}
-
 // What a forming engineer reads: shear, thinning, wrinkle risk and the pressure on the bodies.
-void forming_figures(const RunRecord& run, nlohmann::json& figures) {
-  const CellDeformation d = deformation_of(run);
-  const auto [options, locking_from] = deformation_options(run);
+void forming_json(const RunRecord& run, const CellFigures& cells, const ContactPressure& p, nlohmann::json& figures) {
+  const CellDeformation& d = cells.deformation;
   const auto face_centre = [&](int f) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     const Face& face = run.model.fabric.faces()[static_cast<std::size_t>(f)];
@@ -140,9 +115,8 @@ void forming_figures(const RunRecord& run, nlohmann::json& figures) {
   figures["thickness_ratio_min_at_m"] =
       d.thickness_ratio_min_face < 0 ? nlohmann::json(nullptr) : face_centre(d.thickness_ratio_min_face);
   figures["wrinkle_cells"] = d.wrinkle_cells;
-  figures["locking_angle_deg"] = options.locking_angle_deg;
-  figures["locking_angle_from"] = locking_from;
-  const ContactPressure p = contact_pressure(run.model, run.state.x, run.check.contact);
+  figures["locking_angle_deg"] = cells.options.locking_angle_deg;
+  figures["locking_angle_from"] = cells.locking_from;
   figures["contact_pressure_max_Pa"] = number(p.max_Pa);
   figures["contact_pressure_max_mmHg"] = number(p.max_Pa / kPascalPerMmHg);
   figures["contact_pressure_mean_Pa"] = number(p.mean_Pa);
@@ -151,7 +125,7 @@ void forming_figures(const RunRecord& run, nlohmann::json& figures) {
       p.max_node < 0 ? nlohmann::json(nullptr) : vector_json(run.state.x[static_cast<std::size_t>(p.max_node)]);
 }
 
-std::string result_json(const RunRecord& run) {
+std::string result_json(const RunRecord& run, const StateFigures& state, const CellFigures& cells) {
   const Summary& s = run.summary;
   nlohmann::json j;
   j["fabform_version"] = FABFORM_VERSION;
@@ -183,7 +157,7 @@ std::string result_json(const RunRecord& run) {
   // How far the answer is from the exact rest, estimated (position_error.hpp), and which
   // tolerance stopped a converged run.
   j["position_error_m"] = number(s.position_error_m);
-  j["position_error_estimate"] = s.solver == "newton" ? "newton_step" : "convergence_rate";
+  j["position_error_estimate"] = solver_named(s.solver).position_error_estimate;
   j["tolerance_m"] = s.tolerance_m > 0.0 ? nlohmann::json(s.tolerance_m) : nlohmann::json(nullptr);
   j["converged_on"] = s.converged() ? nlohmann::json(to_string(s.converged_on)) : nlohmann::json(nullptr);
   // Newton's linear solve, and its iterations when it is multigrid's conjugate gradients.
@@ -195,8 +169,8 @@ std::string result_json(const RunRecord& run) {
   j["grid"] = {run.model.fabric.nodes_warp(), run.model.fabric.nodes_weft()};
   j["contact_nodes"] = run.check.contact_nodes;
   j["max_penetration_m"] = number(run.check.max_penetration_m);
-  j["figures"] = figures_json(fabric_figures(run.model, run.state.x, run.check.contact));
-  const DrawIn edge = draw_in(run.model, run.state.x);
+  j["figures"] = figures_json(state.fabric);
+  const DrawIn& edge = state.draw_in;
   j["figures"]["draw_in_max_m"] = edge.max_node < 0 ? nlohmann::json(nullptr) : number(edge.max_m);
   j["figures"]["draw_in_max_node"] = edge.max_node < 0 ? nlohmann::json(nullptr) : nlohmann::json(run.model.fabric.node_name(edge.max_node));
   j["figures"]["springs_cutting_bodies"] = run.check.spring_cuts.springs;
@@ -204,7 +178,7 @@ std::string result_json(const RunRecord& run) {
   j["figures"]["deepest_spring_cut_m"] = run.check.spring_cuts.deepest_m;
   j["figures"]["sliding_nodes"] = run.check.sliding_nodes;
   j["figures"]["stuck_nodes"] = run.check.stuck_nodes;
-  forming_figures(run, j["figures"]);
+  forming_json(run, cells, state.pressure, j["figures"]);
   j["fabric"] = fabric_json(run.model.fabric);
   if (run.scene.drape.on) {
     j["drape"] = drape_json(run);
@@ -295,25 +269,23 @@ void vtk_field(std::ostringstream& out, const char* name, const std::vector<doub
 using PointField = std::pair<const char*, std::vector<double>>;
 
 // What each node of the formed fabric carries into ParaView.
-std::vector<PointField> fabric_fields(const RunRecord& run) {
-  const NodeStrains strains = node_strains(run.model, run.state.x);
-  return {{"strain_warp", strains.warp},
-          {"strain_weft", strains.weft},
+std::vector<PointField> fabric_fields(const RunRecord& run, const StateFigures& state) {
+  return {{"strain_warp", state.strains.warp},
+          {"strain_weft", state.strains.weft},
           {"contact", std::vector<double>(run.check.contact.begin(), run.check.contact.end())},
           {"residual_N", run.check.residual_N},
-          {"draw_in_m", draw_in(run.model, run.state.x).per_node_m},
-          {"contact_pressure_Pa", contact_pressure(run.model, run.state.x, run.check.contact).node_Pa}};
+          {"draw_in_m", state.draw_in.per_node_m},
+          {"contact_pressure_Pa", state.pressure.node_Pa}};
 }
 
 // What each face of the formed fabric carries into ParaView.
-std::vector<PointField> fabric_cell_fields(const RunRecord& run) {
-  const CellDeformation d = deformation_of(run);
+std::vector<PointField> fabric_cell_fields(const CellDeformation& d) {
   return {{"shear_angle_deg", d.shear_angle_deg},
           {"thickness_ratio", d.thickness_ratio},
           {"wrinkle_risk", std::vector<double>(d.wrinkle_risk.begin(), d.wrinkle_risk.end())}};
 }
 
-std::string fabric_vtk(const RunRecord& run) {
+std::string fabric_vtk(const RunRecord& run, const StateFigures& state, const CellFigures& cells) {
   std::ostringstream out;
   out.precision(12);
   const auto& x = run.state.x;
@@ -330,18 +302,18 @@ std::string fabric_vtk(const RunRecord& run) {
     out << '\n';
   }
   out << "POINT_DATA " << x.size() << '\n';
-  for (const auto& [name, values] : fabric_fields(run)) vtk_field(out, name, values);
+  for (const auto& [name, values] : fabric_fields(run, state)) vtk_field(out, name, values);
   out << "CELL_DATA " << faces.size() << '\n';
-  for (const auto& [name, values] : fabric_cell_fields(run)) vtk_field(out, name, values);
+  for (const auto& [name, values] : fabric_cell_fields(cells.deformation)) vtk_field(out, name, values);
   return out.str();
 }
 
 // The bodies where the run left them (bodies.obj's vertices, in its order), with the pressure
 // the fabric puts on each vertex.
-std::string bodies_vtk(const RunRecord& run) {
+std::string bodies_vtk(const RunRecord& run, const ContactPressure& on_bodies) {
   const TriangleMesh all = posed_bodies(run.model);
   std::vector<double> pressure;
-  for (const std::vector<double>& body : contact_pressure(run.model, run.state.x, run.check.contact).body_vertex_Pa)
+  for (const std::vector<double>& body : on_bodies.body_vertex_Pa)
     pressure.insert(pressure.end(), body.begin(), body.end());
   std::ostringstream out;
   out.precision(12);
@@ -404,10 +376,10 @@ std::string vtp_text(const std::vector<Eigen::Vector3d>& points, const std::vect
   return out.str();
 }
 
-std::string fabric_vtp(const RunRecord& run) {
+std::string fabric_vtp(const RunRecord& run, const StateFigures& state) {
   std::vector<std::vector<int>> polygons;
   for (const Face& f : run.model.fabric.faces()) polygons.emplace_back(f.corner.begin(), f.corner.begin() + f.corners);
-  return vtp_text(run.state.x, polygons, fabric_fields(run));
+  return vtp_text(run.state.x, polygons, fabric_fields(run, state));
 }
 
 std::string bodies_vtp(const Model& model) {
@@ -438,16 +410,18 @@ std::string steps_pvd(const std::vector<StepResult>& steps) {
 
 void write_results(const std::string& dir, const RunRecord& run) {
   const bool in_steps = run.model.load_steps() > 0;
+  const StateFigures state = state_figures(run);
+  const CellFigures cells = cell_figures(run);
   std::vector<ResultFile> files = {{"convergence.csv", convergence_csv(run.summary, in_steps)},
                                    {"fabric.obj", fabric_obj(run)},
-                                   {"fabric.vtk", fabric_vtk(run)},
-                                   {"result.json", result_json(run)}};
+                                   {"fabric.vtk", fabric_vtk(run, state, cells)},
+                                   {"result.json", result_json(run, state, cells)}};
   const Termination t = run.summary.termination;
   if (t != Termination::converged && t != Termination::numerical_failure)
     files.emplace_back("checkpoint.bin", checkpoint_bytes(run.state, run.summary));
   if (t != Termination::running && !run.model.bodies.empty()) {  // checkpoints stay light
     files.emplace_back("bodies.obj", bodies_obj(run));
-    files.emplace_back("bodies.vtk", bodies_vtk(run));
+    files.emplace_back("bodies.vtk", bodies_vtk(run, state.pressure));
   }
   if (t != Termination::running) add_print_map_files(run, files);
   if (in_steps && run.steps) {
@@ -462,8 +436,9 @@ void write_results(const std::string& dir, const RunRecord& run) {
 
 StepResult step_result(const RunRecord& run, int step) {
   const Summary& s = run.summary;
-  const FabricFigures f = fabric_figures(run.model, run.state.x, run.check.contact);
-  const DrawIn edge = draw_in(run.model, run.state.x);
+  const StateFigures state = state_figures(run);
+  const FabricFigures& f = state.fabric;
+  const DrawIn& edge = state.draw_in;
   nlohmann::json travel = nlohmann::json::array();
   for (std::size_t b = 0; b < run.model.paths.size(); ++b)
     if (const ToolPath& path = run.model.paths[b]; path.moves())
@@ -486,7 +461,7 @@ StepResult step_result(const RunRecord& run, int step) {
                             {"stuck_nodes", run.check.stuck_nodes},
                             {"fabric_file", step_file("fabric", step)},
                             {"bodies_file", step_file("bodies", step)}};
-  return {step, j.dump(), fabric_vtp(run), bodies_vtp(run.model)};
+  return {step, j.dump(), fabric_vtp(run, state), bodies_vtp(run.model)};
 }
 
 namespace {

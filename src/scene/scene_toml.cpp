@@ -12,6 +12,7 @@
 #include "fabform/model/clamp_frame.hpp"
 #include "fabform/model/wind.hpp"
 #include "fabform/solver/grid_continuation.hpp"
+#include "fabform/solver/solver_registry.hpp"
 #include "scene/scene_overrides.hpp"
 #include "scene/toml_table_reader.hpp"
 
@@ -487,10 +488,8 @@ void read_relative_tolerance(TableReader& r, SolverSpec* s) {
 void read_solver(TableReader r, Scene* scene) {
   SolverSpec& s = scene->solver;
   s.name = r.text("name", "relax");
-  bool known = false;
-  for (const auto& name : solver_names()) known = known || name == s.name;
-  if (!known) r.fail("name", "unknown solver '" + shown(s.name) + "' (see `fabform solvers`)");
-  s.set_tolerance_N(r.number("tolerance_N", s.relax.tolerance_N));
+  if (!find_solver(s.name)) r.fail("name", "unknown solver '" + shown(s.name) + "' (see `fabform solvers`)");
+  s.set_tolerance_N(r.number("tolerance_N", s.tolerance_N()));
   read_relative_tolerance(r, &s);
   if (r.has("tolerance_m")) {
     const double tolerance_m = r.number("tolerance_m", 0.0);
@@ -499,8 +498,7 @@ void read_solver(TableReader r, Scene* scene) {
     s.set_tolerance_m(tolerance_m);
   }
   if (r.has("max_iterations"))
-    s.relax.max_iterations = s.newton.max_iterations = s.dynamic.max_iterations = checked_int(
-        r, "max_iterations", r.integer("max_iterations", 0), 0, 1'000'000'000);
+    s.set_max_iterations(checked_int(r, "max_iterations", r.integer("max_iterations", 0), 0, 1'000'000'000));
   s.relax.C = r.number("C", s.relax.C);
   s.newton.regularization = r.number("regularization", s.newton.regularization);
   s.newton.armijo = r.number("armijo", s.newton.armijo);
@@ -521,9 +519,8 @@ void read_solver(TableReader r, Scene* scene) {
   s.threads = checked_int(r, "threads", r.integer("threads", 1), 1, 1024);
   s.continuation_levels = checked_int(r, "continuation_levels", r.integer("continuation_levels", 0), 0, 10);
   std::string field;
-  if (const std::string why = s.relax.invalid_reason(&field); !why.empty()) r.fail(field, why);
-  if (const std::string why = s.newton.invalid_reason(&field); !why.empty()) r.fail(field, why);
-  if (const std::string why = s.dynamic.invalid_reason(&field); !why.empty()) r.fail(field, why);
+  for (const SolverEntry& solver : solvers())
+    if (const std::string why = solver.invalid_reason(s, &field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "tolerance_m", "max_iterations", "C", "regularization", "armijo",
                     "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
                     "stretch_limit", "threads", "friction_creep", "continuation_levels", "linear_solver"});

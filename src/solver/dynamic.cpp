@@ -11,7 +11,7 @@
 
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/solver/contact_move.hpp"
-#include "fabform/solver/position_error.hpp"
+#include "fabform/solver/solver_loop.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -230,29 +230,16 @@ Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& op
     throw std::invalid_argument("dynamic: " + why);
   if (model.wraps_edges())
     throw std::invalid_argument("dynamic: no stable time step bounds a spring wrapped over an edge; use newton or relax");
-  using Clock = std::chrono::steady_clock;
-  const auto started = Clock::now();
+  const auto started = std::chrono::steady_clock::now();
   Dynamics dynamics(model, state, options);
-  Summary summary = begin_summary("dynamic", options.tolerance_N, std::move(resumed), options.tolerance_m);
-  const double earlier_seconds = summary.seconds;
-  std::vector<Eigen::Vector3d> before;  // the positions before the last step
-  const auto distance = [&] {
-    return before.empty() ? std::nan("") : rate_position_error(summary.history, largest_move(before, state.x));
-  };
-  for (int iteration = summary.iterations;; ++iteration) {
-    // The forces at the state the last step reached give its residual and drive the next step.
-    const std::vector<Eigen::Vector3d> forces = dynamics.forces();
-    const StateResidual m = measure_state(model, state, forces);
-    const double seconds =
-        earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
-    const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
-    if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
-    if (options.tolerance_m > 0.0 && record_position_error(summary, distance())) break;
-    before = state.x;
-    dynamics.advance(forces);
-  }
-  if (final_position_error_due(summary)) summary.position_error_m = distance();
-  summary.message = stop_message(summary) + step_note(dynamics);
+  // The forces at the state the last step reached give its residual and drive the next step.
+  std::vector<Eigen::Vector3d> forces;
+  const SolverSteps steps = rate_estimated_steps(state, options.tolerance_m, [&] { dynamics.advance(forces); }, [&] {
+    forces = dynamics.forces();
+    return measure_state(model, state, forces);
+  });
+  Summary summary = run_solver_loop("dynamic", stop_settings(options), steps, observer, std::move(resumed), started);
+  summary.message += step_note(dynamics);
   return summary;
 }
 

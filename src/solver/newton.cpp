@@ -10,6 +10,7 @@
 
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/solver/contact_move.hpp"
+#include "fabform/solver/solver_loop.hpp"
 #include "fabform/solver/position_error.hpp"
 #include "linalg/linear_solver.hpp"
 #include "solver/free_directions.hpp"
@@ -257,52 +258,34 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
                const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("newton: " + why);
-  using Clock = std::chrono::steady_clock;
-  const auto started = Clock::now();
+  const auto started = std::chrono::steady_clock::now();
   NewtonStep step(model, state, options);
-  Summary summary = begin_summary("newton", options.tolerance_N, std::move(resumed), options.tolerance_m);
-  const int first = summary.iterations;
-  const double earlier_seconds = summary.seconds;
-  const auto elapsed = [&] {
-    return earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
-  };
   std::vector<double> step_sizes;  // of the steps proposed from each state in turn
-  for (int iteration = first;; ++iteration) {
-    bool stepped = true;
-    if (iteration > first) {
-      // The step from the state last recorded measures its distance from the rest. Proposing
-      // releases nodes that pull off a body; a run that stops here keeps the state's own contact.
-      std::vector<NodeContact> contact;
-      if (options.tolerance_m > 0.0) contact = state.contact;
-      const std::optional<Proposal> proposal = step.propose();
-      step_sizes.push_back(proposal ? largest_move(proposal->steps) : std::nan(""));
-      const double distance = newton_position_error(step_sizes);
-      if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) {
-        state.contact = std::move(contact);
-        break;
-      }
-      stepped = proposal && step.take(*proposal, summary.residual_N);
-      if (!stepped) summary.position_error_m = distance;  // the state stays where it was measured
+  SolverSteps steps;
+  steps.step = [&](Summary& summary) {
+    // The step from the state last recorded measures its distance from the rest. Proposing
+    // releases nodes that pull off a body; a run that stops here keeps the state's own contact.
+    std::vector<NodeContact> contact;
+    if (options.tolerance_m > 0.0) contact = state.contact;
+    const std::optional<Proposal> proposal = step.propose();
+    step_sizes.push_back(proposal ? largest_move(proposal->steps) : std::nan(""));
+    const double distance = newton_position_error(step_sizes);
+    if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) {
+      state.contact = std::move(contact);
+      return StepOutcome::stopped;
     }
-    const StateResidual m = measure_state(model, state);
-    if (!stepped && std::isfinite(m.max_residual_N)) {  // a broken state is recorded below
-      summary.termination = Termination::not_converged;
-      summary.seconds = elapsed();
-      summary.message = stall_message(summary);
-      record_linear_solver(summary, step);
-      return summary;
-    }
-    const double seconds = elapsed();
-    const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
-    if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
-  }
+    if (proposal && step.take(*proposal, summary.residual_N)) return StepOutcome::moved;
+    summary.position_error_m = distance;  // the state stays where it was measured
+    return StepOutcome::stalled;
+  };
+  steps.measure = [&] { return measure_state(model, state); };
   // One more factorisation, of the final state, without moving it.
-  if (final_position_error_due(summary)) {
+  steps.final_position_error = [&](const Summary&) {
     step_sizes.push_back(step.next_step_size());
-    summary.position_error_m = newton_position_error(step_sizes);
-  }
-  summary.seconds = elapsed();
-  summary.message = stop_message(summary);
+    return newton_position_error(step_sizes);
+  };
+  steps.stall_message = stall_message;
+  Summary summary = run_solver_loop("newton", stop_settings(options), steps, observer, std::move(resumed), started);
   record_linear_solver(summary, step);
   return summary;
 }

@@ -10,7 +10,7 @@
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/model/spring_strains.hpp"
 #include "fabform/solver/contact_move.hpp"
-#include "fabform/solver/position_error.hpp"
+#include "fabform/solver/solver_loop.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -128,28 +128,11 @@ Summary relax(const Model& model, SolverState& state, const RelaxOptions& option
     throw std::invalid_argument("relax: " + why);
   if (model.has_friction())
     throw std::invalid_argument("relax: seed 003's rule has no stick or slip; friction needs newton or dynamic");
-  using Clock = std::chrono::steady_clock;
-  const auto started = Clock::now();
+  const auto started = std::chrono::steady_clock::now();
   Relaxation relaxation(model, state, options);
-  Summary summary = begin_summary("relax", options.tolerance_N, std::move(resumed), options.tolerance_m);
-  const int first = summary.iterations;
-  const double earlier_seconds = summary.seconds;
-  std::vector<Eigen::Vector3d> before;  // the positions before the last sweep
-  const auto distance = [&] {
-    return before.empty() ? std::nan("") : rate_position_error(summary.history, largest_move(before, state.x));
-  };
-  for (int iteration = first;; ++iteration) {
-    if (iteration > first) before = state.x, relaxation.sweep();
-    const StateResidual m = measure_state(model, state);
-    const double seconds =
-        earlier_seconds + std::chrono::duration<double>(Clock::now() - started).count();
-    const IterationRecord record{iteration, m.max_residual_N, seconds, m.contact_nodes};
-    if (record_iteration(summary, record, m.worst_node, options.max_iterations, observer)) break;
-    if (options.tolerance_m > 0.0 && record_position_error(summary, distance())) break;
-  }
-  if (final_position_error_due(summary)) summary.position_error_m = distance();
-  summary.message = stop_message(summary);
-  return summary;
+  const SolverSteps steps = rate_estimated_steps(state, options.tolerance_m, [&] { relaxation.sweep(); },
+                                                 [&] { return measure_state(model, state); });
+  return run_solver_loop("relax", stop_settings(options), steps, observer, std::move(resumed), started);
 }
 
 }  // namespace fabform

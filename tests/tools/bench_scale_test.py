@@ -40,7 +40,7 @@ class Options(unittest.TestCase):
     def test_bad_options_exit_2(self):
         for bad in (["--sizes", "abc"], ["--sizes", ""], ["--sizes", "2"], ["--sizes", "10002"],
                     ["--timeout", "0"], ["--timeout", "-5"], ["--timeout", "nan"], ["--timeout", "soon"],
-                    ["--runs", "0"], ["--threads", "0"], ["--reference-tol", "0"]):
+                    ["--runs", "0"], ["--threads", "0"], ["--reference-tol", "0"], ["--linear-solver", "lu"]):
             with self.subTest(bad=bad):
                 self.assertEqual(exit_status(["--scale", *bad]), 2)
 
@@ -97,6 +97,14 @@ class TinyDomes(unittest.TestCase):
             self.assertTrue(measured / 3 <= estimate <= 3 * measured, r)
         self.assertIn("p = ", text)
         self.assertIn("t(1001) / t(201): could not be computed: N=1001 was not asked for", text)
+
+    def test_the_linear_solve_asked_for_is_the_one_reported(self):
+        with tempfile.TemporaryDirectory() as out:
+            rows, text = self.scale(out, "--sizes", "11,21", "--runs", "1", "--timeout", "120",
+                                    "--reference-max", "0", "--linear-solver", "multigrid")
+        self.assertEqual([r["linear_solver"] for r in rows], ["multigrid", "multigrid"])
+        self.assertTrue(all(int(r["cg_iterations"]) >= int(r["iterations"]) for r in rows), rows)
+        self.assertIn("linear solve multigrid", text)
 
     def test_a_size_over_the_timeout_is_reported_and_larger_ones_not_run(self):
         with tempfile.TemporaryDirectory() as out:

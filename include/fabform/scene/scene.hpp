@@ -16,7 +16,7 @@
 #include "fabform/geometry/tool_path.hpp"
 #include "fabform/material/compression_response.hpp"
 #include "fabform/model/gravity.hpp"
-#include "fabform/solver/solve.hpp"
+#include "fabform/solver/solver_registry.hpp"
 
 namespace fabform {
 
@@ -161,8 +161,5 @@ struct Scene {
   std::string output_dir;  // "" when the scene names none
   CheckpointSpec checkpoint;
 };
-
-/// The solver names fabform knows, in the order `fabform solvers` lists them.
-const std::vector<std::string>& solver_names();
 
 }  // namespace fabform

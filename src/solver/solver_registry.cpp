@@ -1,0 +1,70 @@
+#include "fabform/solver/solver_registry.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+namespace fabform {
+namespace {
+
+// A row for the solver `run` whose options the spec keeps in its member `kOptions`.
+template <auto kOptions, auto run>
+SolverEntry entry(const char* name, const char* position_error_estimate) {
+  return {name,
+          [](const Model& model, SolverState& state, const SolverSpec& spec, const IterationObserver& observer,
+             Summary resumed) { return run(model, state, spec.*kOptions, observer, std::move(resumed)); },
+          [](const SolverSpec& spec) { return stop_settings(spec.*kOptions); },
+          [](SolverSpec& spec, const StopSettings& stop) { set_stop_settings(spec.*kOptions, stop); },
+          [](const SolverSpec& spec, std::string* field) { return (spec.*kOptions).invalid_reason(field); },
+          position_error_estimate};
+}
+
+// Sets one stop setting in every solver's options, so that a scene stays the same whichever
+// solver --solver names.
+template <class Value>
+void set_in_every_solver(SolverSpec& spec, Value StopSettings::*setting, Value value) {
+  for (const SolverEntry& solver : solvers()) {
+    StopSettings stop = solver.stop_settings(spec);
+    stop.*setting = value;
+    solver.set_stop_settings(spec, stop);
+  }
+}
+
+}  // namespace
+
+const std::vector<SolverEntry>& solvers() {
+  static const std::vector<SolverEntry> table = {
+      entry<&SolverSpec::relax, &relax>("relax", "convergence_rate"),
+      entry<&SolverSpec::dynamic, &dynamic>("dynamic", "convergence_rate"),
+      entry<&SolverSpec::newton, &newton>("newton", "newton_step"),
+  };
+  return table;
+}
+
+const SolverEntry* find_solver(const std::string& name) {
+  for (const SolverEntry& solver : solvers())
+    if (solver.name == name) return &solver;
+  return nullptr;
+}
+
+const SolverEntry& solver_named(const std::string& name) {
+  if (const SolverEntry* solver = find_solver(name)) return *solver;
+  throw std::invalid_argument("unknown solver '" + name + "'");
+}
+
+void SolverSpec::set_tolerance_N(double tolerance_N) {
+  set_in_every_solver(*this, &StopSettings::tolerance_N, tolerance_N);
+}
+
+void SolverSpec::set_tolerance_m(double tolerance_m) {
+  set_in_every_solver(*this, &StopSettings::tolerance_m, tolerance_m);
+}
+
+void SolverSpec::set_max_iterations(int max_iterations) {
+  set_in_every_solver(*this, &StopSettings::max_iterations, max_iterations);
+}
+
+double SolverSpec::tolerance_N() const { return solver_named(name).stop_settings(*this).tolerance_N; }
+
+double SolverSpec::tolerance_m() const { return solver_named(name).stop_settings(*this).tolerance_m; }
+
+}  // namespace fabform
