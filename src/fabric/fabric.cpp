@@ -102,9 +102,10 @@ void Fabric::adopt(FabricLayout layout) {
   }
 }
 
-// Springs along the faces' sides, warp where a side runs nearer x than y in the flat fabric
-// (on a lattice exactly along one of them, on a jittered one within 24° of it), each as wide as the area it stands for over its
-// length. Warp springs come first, then weft, each in node order.
+// Springs along the faces' sides, warp where a side runs nearer x than y in the flat fabric (on
+// a lattice exactly along one of them, on a jittered one within 24° of it: kMaxJitter), each as
+// wide as the area it stands for over its length. Warp springs come first, then weft, each in
+// node order.
 void Fabric::add_edge_springs() {
   for (const auto& [side, share, faces] : merged_sides(faces_, face_areas_)) {
     const Eigen::Vector3d d = rest_position(side.second) - rest_position(side.first);

@@ -1,20 +1,21 @@
 #include "fabform/fabric/fabric_layout.hpp"
 
-#include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "fabform/fabric/split_mix.hpp"
 
 namespace fabform {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// A point uniform in the unit disc: the radius as the root of a uniform draw, so that equal
-// areas are equally likely.
+// A point uniform in the unit disc, by rejection from the square around it: arithmetic alone, so
+// the same on every machine (a sine's last bit may differ between maths libraries).
 Eigen::Vector2d in_unit_disc(std::uint64_t* state) {
-  const double radius = std::sqrt(0.5 * (symmetric_unit(state) + 1.0)), angle = kPi * symmetric_unit(state);
-  return {radius * std::cos(angle), radius * std::sin(angle)};
+  for (;;) {
+    const double x = symmetric_unit(state);
+    const double y = symmetric_unit(state);
+    if (x * x + y * y < 1.0) return {x, y};
+  }
 }
 
 // Faces at each node: a lattice node with four is inside the fabric, one with fewer on its outline.

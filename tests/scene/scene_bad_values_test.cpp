@@ -272,7 +272,7 @@ const std::vector<KeyRow>& key_table() {
         {"arc_without_its_keys", "\"arc\"", R, "fabric.rings"}, {"jittered", "\"jittered\"", A, kSame}}},
       // A fraction of the lattice spacing, at most 0.2 (kMaxJitter); the default 0.2.
       {"fabric.jitter",                  T::number,    jittered, A, R, R,  R,   _,    "",
-       {{"cap", "0.2", A, kSame}, {"beyond_cap", "0.21", R, kSame}, {"a_string", "\"0.1\"", R, kSame}}},
+       {{"cap", "0.2", A, kSame}, {"beyond_cap", "0.21", R, kSame}}},
       {"fabric.divisions",               T::integer,   circle, R, R,  R,   R,   _,    "",
        {{"two", "2", R, kSame}, {"three", "3", A, kSame}, {"beyond_10000", "10001", R, kSame},
         {"a_pair", "[8, 8]", R, kSame}}},
