@@ -11,7 +11,9 @@ scenes/pin.toml) with the [fabric] mesh keys replaced, runs `build/fabform run` 
 result.json. Level 1 is by default seed 000's comparison: divisions 24 for the lattices (437 nodes
 on the 30 cm circle) against 15 rings on 32 spokes for the arc mesh (481 nodes); level L
 multiplies divisions, rings and spokes by L. The triangular mesh's diagonal springs follow the fabric's shear table
-(materials/FABRIC_shear.csv next to its warp table), added as a [shear] section.
+(materials/FABRIC_shear.csv next to its warp table), added as a [shear] section. The jittered mesh (not seed
+000's) is the lattice with its inner nodes moved at random by up to 0.2 of the spacing, drawn from [initial]
+seed: a mesh with no symmetry of its own, run only when --meshes names it.
 
 Writes into --out (default results/drape_meshes): drape_meshes.csv (one row a run), table.md
 (the Figure 9 table and the refinement table, printed too) and runs/ (each run's result.json and
@@ -25,6 +27,8 @@ Usage (after tools/setup.sh, from anywhere):
   /usr/bin/python3 tools/drape_meshes.py --rigidity 8.06e-5 --levels 1,2   # the pin with hinges
   /usr/bin/python3 tools/drape_meshes.py --scene scenes/cusick.toml --divisions 40 --rings 20 --spokes 64 \
       --set fabric.compression=buckling --set initial.perturbation_m=1e-4   # folds from the fabric
+  /usr/bin/python3 tools/drape_meshes.py --scene scenes/cusick.toml --divisions 40 --rings 20 --spokes 64 \
+      --levels 1,2 --meshes quadrangular,arc,jittered --set initial.seed=2   # and from no mesh's symmetry
 Standard library only.
 """
 import argparse
@@ -37,7 +41,7 @@ import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 FABFORM = ROOT / "build" / "fabform"
-MESHES = ("quadrangular", "triangular", "arc")
+MESHES = ("quadrangular", "triangular", "arc", "jittered")
 LEVEL_ONE = {"divisions": 24, "rings": 15, "spokes": 32}  # seed 000: similar numbers of nodes
 SMOKE = {"divisions": 8, "rings": 4, "spokes": 12}
 MESH_KEYS = re.compile(r"^\s*(mesh|divisions|rings|spokes)\s*=")
@@ -148,7 +152,7 @@ def main(argv=None):
     parser.add_argument("--divisions", type=int, default=LEVEL_ONE["divisions"], help="lattice divisions at level 1")
     parser.add_argument("--rings", type=int, default=LEVEL_ONE["rings"], help="arc mesh rings at level 1")
     parser.add_argument("--spokes", type=int, default=LEVEL_ONE["spokes"], help="arc mesh spokes at level 1")
-    parser.add_argument("--meshes", default=",".join(MESHES), help="which meshes, comma-separated")
+    parser.add_argument("--meshes", default=",".join(MESHES[:3]), help="which meshes, comma-separated (%s)" % ", ".join(MESHES))
     parser.add_argument("--solver", default=None, help="override the scene's solver")
     parser.add_argument("--rigidity", type=float, default=None,
                         help="bend with hinges of this flexural rigidity (N·m) in place of the scene's [bending]")

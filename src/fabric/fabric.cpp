@@ -10,7 +10,8 @@ namespace {
 
 FabricLayout layout_of(const FabricSpec& spec) {
   if (spec.shape == FabricSpec::Shape::rectangle) return rectangle_layout(spec);
-  return spec.mesh == FabricSpec::Mesh::arc ? arc_layout(spec) : circle_lattice_layout(spec);
+  if (spec.mesh == FabricSpec::Mesh::arc) return arc_layout(spec);
+  return spec.mesh == FabricSpec::Mesh::jittered ? jittered_layout(spec) : circle_lattice_layout(spec);
 }
 
 using Edge = std::pair<int, int>;  // (lower node, higher node)
@@ -96,21 +97,22 @@ void Fabric::adopt(FabricLayout layout) {
   // A lattice's cells are spacing × spacing exactly, as seed 003 writes them; corners at
   // rounded multiples of the spacing would give areas off by ε·(size / spacing).
   for (const Face& f : faces_) {
-    face_areas_.push_back(spec_.mesh == FabricSpec::Mesh::arc ? face_area(f, rest_) : spacing_[0] * spacing_[1]);
+    face_areas_.push_back(spec_.spaced_exactly() ? spacing_[0] * spacing_[1] : face_area(f, rest_));
     flat_area_ += face_areas_.back();
   }
 }
 
-// Springs along the faces' sides, warp where a side runs nearer x than y in the flat fabric
-// (on a lattice exactly along one of them), each as wide as the area it stands for over its
-// length. Warp springs come first, then weft, each in node order.
+// Springs along the faces' sides, warp where a side runs nearer x than y in the flat fabric (on
+// a lattice exactly along one of them, on a jittered one within 24° of it: kMaxJitter), each as
+// wide as the area it stands for over its length. Warp springs come first, then weft, each in
+// node order.
 void Fabric::add_edge_springs() {
   for (const auto& [side, share, faces] : merged_sides(faces_, face_areas_)) {
     const Eigen::Vector3d d = rest_position(side.second) - rest_position(side.first);
     const SpringKind kind = std::abs(d.x()) >= std::abs(d.y()) ? SpringKind::warp : SpringKind::weft;
     // A lattice's springs are its spacing long exactly, as seed 003 writes them (positions
     // i·spacing differ from it by rounding).
-    const double length = spec_.mesh == FabricSpec::Mesh::arc ? d.norm() : spacing_[kind == SpringKind::warp ? 0 : 1];
+    const double length = spec_.spaced_exactly() ? spacing_[kind == SpringKind::warp ? 0 : 1] : d.norm();
     springs_.push_back({side.first, side.second, length, share / length, kind});
   }
   std::stable_sort(springs_.begin(), springs_.end(),
@@ -135,13 +137,19 @@ void Fabric::add_shear_springs() {
 // node, from the node before to the node after. Each side spring's continuation is the other
 // side spring at the node that turns least from it (more than 120° apart, each the other's
 // choice), which on a lattice is the one straight on and on an arc mesh the next along its
-// ring or radial line. Its width is the mean of the two it spans.
+// ring or radial line. A lattice's turns are its indices' (a jittered lattice's moved nodes
+// would let a turn of 90° look straighter than the row's next), an arc mesh's its flat positions'.
+// Its width is the mean of the two it spans.
 void Fabric::add_bend_springs() {
+  const auto heading = [&](int from, int to) -> Eigen::Vector3d {
+    if (spec_.mesh == FabricSpec::Mesh::arc) return (rest_position(to) - rest_position(from)).normalized();
+    return Eigen::Vector3d(i_of(to) - i_of(from), j_of(to) - j_of(from), 0.0).normalized();
+  };
   for (int middle = 0; middle < node_count(); ++middle) {
     const auto away = [&](int s) {
       const Spring& spring = springs_[static_cast<std::size_t>(s)];
       const int other = spring.a == middle ? spring.b : spring.a;
-      return std::pair<int, Eigen::Vector3d>{other, (rest_position(other) - rest_position(middle)).normalized()};
+      return std::pair<int, Eigen::Vector3d>{other, heading(middle, other)};
     };
     const auto straightest = [&](int s) {
       int best = -1;

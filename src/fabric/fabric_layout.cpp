@@ -36,6 +36,8 @@ std::string circle_reason(const FabricSpec& spec) {
       return "fabric has more than 50 million nodes";
     return "";
   }
+  if (spec.mesh == FabricSpec::Mesh::jittered && !(spec.jitter > 0.0 && spec.jitter <= kMaxJitter))
+    return "a jittered mesh moves its nodes by a fraction of the spacing in (0, 0.2]";
   if (spec.divisions_warp != spec.divisions_weft)
     return "a circle's lattice has as many divisions along warp as along weft";
   if (spec.divisions_warp < 3) return "a circle's lattice needs at least 3 divisions across it";
@@ -60,6 +62,7 @@ const char* to_string(FabricSpec::Mesh mesh) {
     case FabricSpec::Mesh::quadrangular: return "quadrangular";
     case FabricSpec::Mesh::triangular: return "triangular";
     case FabricSpec::Mesh::arc: return "arc";
+    case FabricSpec::Mesh::jittered: return "jittered";
   }
   return "?";
 }

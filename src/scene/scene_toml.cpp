@@ -111,24 +111,35 @@ void read_rectangle(TableReader& r, Scene* scene) {
   scene->fabric_where = r.locate_key("divisions");
 }
 
-// Seed 000's circle: lattice points inside it (quadrangular, triangular) or rings on spokes.
+// A jittered lattice's nodes move by up to this fraction of its spacing (kMaxJitter keeps its
+// cells convex); its seed is the start's, [initial] seed, read later (parse_scene).
+void read_jitter(TableReader& r, FabricSpec* f) {
+  f->jitter = r.number("jitter", kMaxJitter);
+  if (!(f->jitter > 0.0 && f->jitter <= kMaxJitter))
+    r.fail("jitter", "must be in (0, 0.2], a fraction of the lattice spacing (more could turn a cell's corner inward)");
+}
+
+// Seed 000's circle: lattice points inside it (quadrangular, triangular, jittered) or rings on spokes.
 void read_circle(TableReader& r, Scene* scene) {
   FabricSpec& f = scene->fabric;
   f.shape = FabricSpec::Shape::circle;
   f.width_m = f.height_m = r.number("diameter_m", 0.0, true);
   check_size(r, "diameter_m", f.width_m);
   const std::string mesh = r.text("mesh", "", true);
-  if (mesh == "quadrangular" || mesh == "triangular") {
-    f.mesh = mesh == "triangular" ? FabricSpec::Mesh::triangular : FabricSpec::Mesh::quadrangular;
+  if (mesh == "quadrangular" || mesh == "triangular" || mesh == "jittered") {
+    f.mesh = mesh == "triangular" ? FabricSpec::Mesh::triangular
+             : mesh == "jittered" ? FabricSpec::Mesh::jittered
+                                  : FabricSpec::Mesh::quadrangular;
     f.divisions_warp = f.divisions_weft = checked_int(r, "divisions", r.integer("divisions", 0, true), 3, 10000);
     scene->fabric_where = r.locate_key("divisions");
+    if (f.mesh == FabricSpec::Mesh::jittered) read_jitter(r, &f);
   } else if (mesh == "arc") {
     f.mesh = FabricSpec::Mesh::arc;
     f.rings = checked_int(r, "rings", r.integer("rings", 0, true), 1, 5000);
     f.spokes = checked_int(r, "spokes", r.integer("spokes", 0, true), 3, 10000);
     scene->fabric_where = r.locate_key("rings");
   } else {
-    r.fail("mesh", "must be one of quadrangular, triangular, arc (got '" + shown(mesh) + "')");
+    r.fail("mesh", "must be one of quadrangular, triangular, arc, jittered (got '" + shown(mesh) + "')");
   }
 }
 
@@ -164,6 +175,9 @@ void read_fabric(TableReader& r, Scene* scene) {
   else if (scene->fabric.mesh == FabricSpec::Mesh::arc)
     r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
                      "areal_mass_g_m2", "compression"});
+  else if (scene->fabric.mesh == FabricSpec::Mesh::jittered)
+    r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "jitter", "origin_m", "warp", "weft", "softening",
+                      "locking_angle_deg", "areal_mass_g_m2", "compression"});
   else
     r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
                      "areal_mass_g_m2", "compression"});
@@ -664,6 +678,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
     fabric.fail("mesh", "a triangular mesh has diagonal springs: name their bias table in a [shear] table "
                         "(material = FILE)");
   read_initial(r.table("initial", false), &scene);
+  scene.fabric.jitter_seed = scene.perturbation.seed;  // one seed for the specimen's imperfections
   TableReader solver = r.table("solver", false);
   read_solver(solver, &scene);
   scene.tolerance_where = solver.locate_key("tolerance_relative");

@@ -29,10 +29,11 @@ namespace {
 // The valid scene every case starts from: every key of the format, written once, with the
 // repository's material tables and dome mold. Four variants, as some keys depend on others:
 // the initial shape's on the shape, lift (height_m) or wrap (axis_m, radius_m, facing_deg,
-// span_deg); the fabric's on its outline, a rectangle or a circle meshed as a lattice (circle)
-// or as rings on spokes (arc). The circles also hold the drape test's force terms and [drape].
+// span_deg); the fabric's on its outline, a rectangle or a circle meshed as a lattice (circle),
+// as rings on spokes (arc) or as a jittered lattice (jittered, the circle's scene with its mesh
+// and jitter). The circles also hold the drape test's force terms and [drape].
 
-enum class Base { lift, wrap, circle, arc };
+enum class Base { lift, wrap, circle, arc, jittered };
 
 const char* prefix_of(Base base) {
   switch (base) {
@@ -40,6 +41,7 @@ const char* prefix_of(Base base) {
     case Base::wrap: return "wrap_";
     case Base::circle: return "circle_";
     case Base::arc: return "arc_";
+    case Base::jittered: return "jittered_";
   }
   return "";
 }
@@ -107,10 +109,20 @@ std::vector<Section> drape_sections(Base base) {
   return sections;
 }
 
+// The circle's scene meshed as a jittered lattice.
+SceneText jittered(SceneText circle) {
+  std::vector<Entry>& fabric = circle.sections[1].entries;
+  const auto mesh = std::find_if(fabric.begin(), fabric.end(), [](const Entry& e) { return e.key == "mesh"; });
+  mesh->value = "\"jittered\"";
+  fabric.insert(mesh + 2, {"jitter", "0.15"});  // after divisions
+  return circle;
+}
+
 // A 10 cm knit (a square of 4 x 4 divisions or a circle), 5 cm above a 3 cm dome, held by one
 // constraint of each selector kind. The scene's own path is scenes/sweep.toml, so paths are
 // relative to scenes/.
 SceneText base_scene(Base base) {
+  if (base == Base::jittered) return jittered(base_scene(Base::circle));
   SceneText scene{{},
           {{"scene", "[scene]", {{"name", "\"sweep\""}, {"description", "\"every key of the scene format\""}}},
            fabric_section(base),
@@ -239,7 +251,7 @@ constexpr const char* kSame = "";
 
 const std::vector<KeyRow>& key_table() {
   using T = Type;
-  const Base lift = Base::lift, wrap = Base::wrap, circle = Base::circle, arc = Base::arc;
+  const Base lift = Base::lift, wrap = Base::wrap, circle = Base::circle, arc = Base::arc, jittered = Base::jittered;
   static const std::vector<KeyRow> rows = {
       // key                             type          base  miss neg zero huge empty builder
       {"scene",                          T::table,     lift, A,   _,  _,   _,   _,    "", {}},
@@ -258,7 +270,10 @@ const std::vector<KeyRow>& key_table() {
        {{"beyond_1e6_m", "2e6", R, kSame}}},
       {"fabric.mesh",                    T::choice,    circle, R, _,  _,   _,   R,    "",
        {{"upper_case", "\"Arc\"", R, kSame}, {"triangular", "\"triangular\"", A, kSame},
-        {"arc_without_its_keys", "\"arc\"", R, "fabric.rings"}}},
+        {"arc_without_its_keys", "\"arc\"", R, "fabric.rings"}, {"jittered", "\"jittered\"", A, kSame}}},
+      // A fraction of the lattice spacing, at most 0.2 (kMaxJitter); the default 0.2.
+      {"fabric.jitter",                  T::number,    jittered, A, R, R,  R,   _,    "",
+       {{"cap", "0.2", A, kSame}, {"beyond_cap", "0.21", R, kSame}}},
       {"fabric.divisions",               T::integer,   circle, R, R,  R,   R,   _,    "",
        {{"two", "2", R, kSame}, {"three", "3", A, kSame}, {"beyond_10000", "10001", R, kSame},
         {"a_pair", "[8, 8]", R, kSame}}},
@@ -759,7 +774,7 @@ INSTANTIATE_TEST_SUITE_P(EveryKey, SceneBadValue, ::testing::ValuesIn(all_cases(
 
 // The base scenes are valid through to a model: every failure above is the edited key's.
 TEST(SceneBadValueTable, BaseScenesBuildAModel) {
-  for (const Base base : {Base::lift, Base::wrap, Base::circle, Base::arc}) {
+  for (const Base base : {Base::lift, Base::wrap, Base::circle, Base::arc, Base::jittered}) {
     const std::string text = render(base_scene(base)).text;
     const Scene scene = parse_scene(text, scene_path());
     EXPECT_NO_THROW(build_model(scene)) << text;
@@ -801,7 +816,7 @@ TEST(SceneBadValueTable, ListsEveryKeyTheParserKnows) {
       {Base::lift, "constraint.0"}, {Base::lift, "initial"}, {Base::lift, "solver"}, {Base::lift, "output"},
       {Base::wrap, "initial"},   {Base::circle, "fabric"}, {Base::arc, "fabric"},  {Base::circle, "shear"},
       {Base::circle, "bending"}, {Base::arc, "bending"},  {Base::circle, "drape"}, {Base::lift, "shear"},
-      {Base::lift, "body.0.path"}, {Base::circle, "clamp"}};
+      {Base::lift, "body.0.path"}, {Base::circle, "clamp"}, {Base::jittered, "fabric"}};
   for (const auto& [base, section] : sections) {
     const std::set<std::string> known = known_keys(base_scene(base), section);
     EXPECT_FALSE(known.empty()) << "no list of known keys for section '" << section << "'";

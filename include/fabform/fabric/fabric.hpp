@@ -2,8 +2,9 @@
 // The fabric: nodes in the flat, unstretched cloth, the springs between them and the faces
 // they bound. Seed 003's n × m rectangle (warp along x, index i; weft along y, index j) is one
 // layout; seed 000's circles meshed quadrangular, triangular (the same lattice with diagonal
-// springs) and arc (concentric rings on radial lines) are the others. Seed 004's shear
-// (diagonal) and bend (skip-one) springs are added on request.
+// springs), arc (concentric rings on radial lines) and jittered (the lattice, its inner nodes
+// moved at random) are the others. Seed 004's shear (diagonal) and bend (skip-one) springs are
+// added on request.
 #include <array>
 #include <string>
 #include <vector>

@@ -1,9 +1,12 @@
 #pragma once
 // Where a fabric's nodes lie in the flat cloth and which faces they bound, for each shape the
 // seeds use: seed 003's rectangle of n × m nodes, and seed 000's circle, meshed as the lattice
-// points inside it (quadrangular; triangular is the same lattice with diagonal springs) or as
-// concentric rings on radial lines (arc). The springs are derived from the faces (fabric.hpp).
+// points inside it (quadrangular; triangular is the same lattice with diagonal springs), as
+// concentric rings on radial lines (arc) or as the lattice with its inner nodes moved by a seeded
+// random fraction of its spacing (jittered, issue 22 item 4: a mesh with no symmetry to impose a
+// fold count). The springs are derived from the faces (fabric.hpp).
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,9 +20,16 @@ struct Face {
   int corners = 4;
 };
 
+// A jittered mesh's largest move, as a fraction of the spacing. With every node within r·spacing
+// of its lattice point, a cell's corner stays on its side of the diagonal through its two
+// neighbours (h/√2 away) while 3r < 1/√2, so every cell stays convex; 0.2 keeps each corner 0.1
+// of the spacing clear of it, and each side within asin(2r) = 24° of its lattice direction, so
+// that it stays a warp or a weft spring.
+constexpr double kMaxJitter = 0.2;
+
 struct FabricSpec {
   enum class Shape { rectangle, circle };
-  enum class Mesh { quadrangular, triangular, arc };
+  enum class Mesh { quadrangular, triangular, arc, jittered };
   double width_m = 0.1;   // rectangle W along warp (x); circle: its diameter (= height_m)
   double height_m = 0.1;  // rectangle H along weft (y)
   int divisions_warp = 40;  // rectangle: springs along x; circle lattice: cells across the diameter
@@ -28,6 +38,8 @@ struct FabricSpec {
   Mesh mesh = Mesh::quadrangular;  // circles; a rectangle is quadrangular
   int rings = 0;   // arc: concentric rings around the centre node
   int spokes = 0;  // arc: radial lines, nodes on each ring
+  double jitter = 0.0;           // jittered: the largest move of a node, as a fraction of the spacing
+  std::uint64_t jitter_seed = 1;  // jittered: the seed of the moves ([initial] seed)
   bool shear_springs = false;  // both diagonals of every four-sided cell (implied by triangular)
   bool bend_springs = false;   // a spring over every two consecutive springs in line
   bool hinges = false;         // a bending hinge across every side two faces share
@@ -35,6 +47,9 @@ struct FabricSpec {
   /// Why the spec cannot make a fabric, or "".
   std::string invalid_reason() const;
   double radius_m() const { return 0.5 * width_m; }
+  /// Whether the nodes sit on multiples of the lattice spacing, so that cells and springs take
+  /// their sizes from it exactly (not on an arc or a jittered mesh).
+  bool spaced_exactly() const { return mesh == Mesh::quadrangular || mesh == Mesh::triangular; }
 };
 
 const char* to_string(FabricSpec::Shape shape);
@@ -54,6 +69,9 @@ struct FabricLayout {
 FabricLayout rectangle_layout(const FabricSpec& spec);
 FabricLayout circle_lattice_layout(const FabricSpec& spec);
 FabricLayout arc_layout(const FabricSpec& spec);
+/// The circle's lattice (circle_lattice_layout) with every node that is not on its outline moved
+/// by its lattice point's seeded draw, uniform in a disc of radius spec.jitter × spacing.
+FabricLayout jittered_layout(const FabricSpec& spec);
 
 /// The area of a face at positions x (m²): a quadrilateral as two triangles split at corner 0.
 double face_area(const Face& face, const std::vector<Eigen::Vector3d>& x);

@@ -3,8 +3,7 @@
 // symmetric start lets the mesh's own symmetry choose how a drape folds (the quadrangular lattice
 // 4 folds, the arc mesh none); an imperfection, as every real specimen has, lets the fabric's
 // stiffness and weight choose. Each node not held in z moves along z by a uniform draw from
-// [−a, a], the same for a given seed on every machine (a 64-bit SplitMix sequence of its own,
-// not the standard library's distributions, whose algorithms differ between libraries).
+// [−a, a], the same for a given seed on every machine (split_mix.hpp).
 #include <cstdint>
 #include <vector>
 
