@@ -106,6 +106,8 @@ Summary solve_in_steps(Model& model, SolverState& state, const SolverSpec& spec,
     run.termination = done.termination;
     run.converged_on = done.converged_on;
     run.position_error_m = done.position_error_m;
+    run.linear_solver = done.linear_solver;
+    run.linear_iterations += done.linear_iterations;
     run.message = step_message(step, steps, done);
     if (!done.converged()) return run;
     if (step_done) step_done(step, state, done);

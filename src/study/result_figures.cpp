@@ -31,6 +31,7 @@ std::vector<std::string> result_figure_paths(const Scene& scene) {
     paths.emplace_back(peak);
     paths.push_back(std::string(peak) + ".strain");
   }
+  if (scene.solver.name == "newton") paths.emplace_back("linear_iterations");  // its linear solve's
   if (scene.drape.on)
     for (const char* p : {"drape_coefficient", "drape.coefficient", "drape.shadow_area_m2", "drape.specimen_area_m2",
                           "drape.support_area_m2", "drape.folds", "drape.shadow_pieces"})
