@@ -4,11 +4,15 @@
 #include <HYPRE.h>
 #include <HYPRE_parcsr_ls.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <new>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "fabform/error.hpp"
 
 namespace fabform {
 
@@ -38,7 +42,7 @@ class HypreSession {
     if (!running) {
       int provided = 0;
       if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
-        throw std::runtime_error("MPI could not be started for hypre");
+        throw SystemError("MPI", "start for hypre's multigrid", "MPI_Init_thread failed");
       started_mpi_ = true;
     }
     check(HYPRE_Init(), "initialisation");

@@ -3,7 +3,7 @@
 // algebraic multigrid whose cost grows linearly with the unknowns where a sparse Cholesky's
 // fill grows as their 1.5th power on a fabric grid. hypre runs here on one MPI process (MPI is
 // started on first use and finished at exit) and on one thread (Debian builds it without
-// OpenMP). hypre's error codes become std::runtime_error.
+// OpenMP). hypre's error codes become std::runtime_error; MPI that cannot start, a SystemError.
 #include <memory>
 #include <vector>
 
