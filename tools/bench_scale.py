@@ -8,15 +8,24 @@ could not measure: a size that does not finish within --timeout is reported as o
 
 What it does: for each N in --sizes (nodes a side; default 101,201,401,1001) it runs
 `fabform run scenes/dome.toml --set fabric.divisions=[N-1,N-1] --solver newton --tol 1e-6`
-(with `--set solver.linear_solver=` --linear-solver: auto, cholesky or multigrid) up to --runs times (again only while the size's runs so far and one more fit in --timeout:
-several runs where affordable, medians), and records per N: wall seconds (result.json's
+(with `--set solver.linear_solver=` --linear-solver: auto, cholesky or multigrid, and
+`--set solver.continuation_levels=` --continuation when it is not 0) once for each thread count
+in --threads, each up to --runs times (again only while the size's runs so far and one more fit
+in --timeout: several runs where affordable, medians), and records per N and thread count: wall seconds (result.json's
 wall_seconds, the whole run) and solve seconds (solve_seconds), medians over the runs;
 iterations; peak memory (the largest resident size of the runs, from wait4's rusage); and
 result.json's position_error_m, the estimate of the largest node distance from the exact rest.
 Where N <= --reference-max it also solves to --reference-tol (the reference) and measures the
-largest node distance of the first run from it, the figure the estimate is checked against.
-Then: the exponent p of time against nodes, t ~ nodes^p, fitted by least squares on log t
-against log nodes over the sizes that finished (solve and wall), and t(1001) / t(201).
+largest node distance of the first run from it, the figure the estimate is checked against
+(first thread count only; with --continuation the reference's coarser rests differ from the
+run's, so the two can settle on neighbouring rests of the faceted dome, and the distance is then
+that of the rests, not the estimate's error).
+Then, for each thread count: the exponent p of time against nodes, t ~ nodes^p, fitted by least
+squares on log t against log nodes over the sizes that finished (solve and wall), and
+t(1001) / t(201); per N, each thread count's speed-up over the first's (wall and solve).
+--baseline names another fabform binary (an older build, say) run on the same sizes, with the
+first thread count and none of the --set options above (it may predate them); per N the report
+gives its wall seconds over this build's, the issue's "× faster than newton at efbbdec".
 
 Writes scale.csv and scale.md into --out (default results/bench_scale) and prints scale.md.
 The machine's load average is printed with it: timings on a shared machine are under load.
@@ -24,6 +33,7 @@ Exit status 0, or 2 for bad options (one line).
 """
 import argparse
 import csv
+import dataclasses
 import json
 import math
 import os
@@ -39,7 +49,7 @@ SIZES = "101,201,401,1001"
 TOLERANCE_N = 1e-6     # the dome scene's e
 SOLVER = "newton"
 LINEAR_SOLVERS = ("auto", "cholesky", "multigrid")
-COLUMNS = ["N", "nodes", "status", "runs", "wall_s", "solve_s", "iterations", "linear_solver", "cg_iterations",
+COLUMNS = ["N", "build", "threads", "nodes", "status", "runs", "wall_s", "solve_s", "iterations", "linear_solver", "cg_iterations",
            "peak_MiB", "position_error_m", "measured_distance_m", "note"]
 
 
@@ -61,6 +71,17 @@ def parse_sizes(text: str) -> list:
     return sizes
 
 
+def parse_threads(text: str) -> list:
+    """'1,2' -> [1, 2], in the order given without duplicates; each 1 ... 64."""
+    try:
+        counts = list(dict.fromkeys(int(v) for v in text.split(",") if v.strip()))
+    except ValueError:
+        fail(f"--threads: not a comma-separated list of integers: '{text}'")
+    if not counts or not all(1 <= t <= 64 for t in counts):
+        fail("--threads: thread counts must be 1 ... 64")
+    return counts
+
+
 def parse_args(argv: list) -> argparse.Namespace:
     p = argparse.ArgumentParser(prog="bench_solvers.py --scale", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -68,7 +89,10 @@ def parse_args(argv: list) -> argparse.Namespace:
     p.add_argument("--sizes", default=SIZES, help=f"nodes a side (default {SIZES})")
     p.add_argument("--timeout", type=float, default=600.0, help="seconds for each size's runs (600)")
     p.add_argument("--runs", type=int, default=3, help="runs a size at most, for the medians (3)")
-    p.add_argument("--threads", type=int, default=1, help="threads of each run (1)")
+    p.add_argument("--threads", default="1", help="thread counts, each run in turn, e.g. 1,2 (1)")
+    p.add_argument("--continuation", type=int, default=0,
+                   help="newton's grid continuation, solver.continuation_levels, 0 ... 10 (0: none)")
+    p.add_argument("--baseline", default="", help="another fabform binary to time on the same sizes")
     p.add_argument("--linear-solver", default="auto",
                    help="newton's linear solve, solver.linear_solver: " + ", ".join(LINEAR_SOLVERS) + " (auto)")
     p.add_argument("--reference-max", type=int, default=201,
@@ -81,8 +105,11 @@ def parse_args(argv: list) -> argparse.Namespace:
         fail("--timeout: must be a positive number of seconds")
     if args.runs < 1:
         fail("--runs: at least 1")
-    if args.threads < 1:
-        fail("--threads: at least 1")
+    args.threads = parse_threads(args.threads)
+    if not 0 <= args.continuation <= 10:
+        fail("--continuation: must be 0 ... 10")
+    if args.baseline and not pathlib.Path(args.baseline).is_file():
+        fail(f"--baseline: {args.baseline}: no such file")
     if args.linear_solver not in LINEAR_SOLVERS:
         fail(f"--linear-solver: '{args.linear_solver}' is not one of " + ", ".join(LINEAR_SOLVERS))
     if not (math.isfinite(args.reference_tol) and args.reference_tol > 0):
@@ -116,20 +143,41 @@ def time_ratio(rows: list, key: str, big: int = 1001, small: int = 201) -> tuple
 
 # --- the runs --------------------------------------------------------------------------------
 
-def command(n: int, tolerance: float, args, out: pathlib.Path) -> list:
-    return [str(bench.FABFORM), "run", str(bench.scene_path("dome")), "--out", str(out), "--solver", SOLVER,
-            "--tol", repr(tolerance), "--threads", str(args.threads), "--max-iter", str(bench.MAX_ITERATIONS),
-            "--set", f"fabric.divisions=[{n - 1},{n - 1}]",
-            "--set", f"solver.linear_solver={args.linear_solver}", "--quiet"]
+@dataclasses.dataclass(frozen=True)
+class Build:
+    """A fabform to time: which binary, with how many threads and which scene settings."""
+    label: str        # "this" or "baseline"
+    binary: str
+    threads: int
+    sets: tuple       # "KEY=VALUE" for --set
+
+    def name(self) -> str:
+        return f"{self.label}, {self.threads} thread(s)"
 
 
-def run_once(n: int, tolerance: float, args, out: pathlib.Path, budget: float) -> dict:
+def builds(args) -> list:
+    """This build once per thread count, then the baseline (if any) with the first."""
+    sets = [f"solver.linear_solver={args.linear_solver}"]
+    if args.continuation:
+        sets.append(f"solver.continuation_levels={args.continuation}")
+    this = [Build("this", str(bench.FABFORM), t, tuple(sets)) for t in args.threads]
+    return this + ([Build("baseline", args.baseline, args.threads[0], ())] if args.baseline else [])
+
+
+def command(n: int, tolerance: float, build: Build, out: pathlib.Path) -> list:
+    sets = [item for kv in build.sets for item in ("--set", kv)]
+    return [build.binary, "run", str(bench.scene_path("dome")), "--out", str(out), "--solver", SOLVER,
+            "--tol", repr(tolerance), "--threads", str(build.threads), "--max-iter", str(bench.MAX_ITERATIONS),
+            "--set", f"fabric.divisions=[{n - 1},{n - 1}]", *sets, "--quiet"]
+
+
+def run_once(n: int, tolerance: float, build: Build, out: pathlib.Path, budget: float) -> dict:
     """One fabform run within `budget` seconds: its figures, and its positions when it finished."""
     if out.exists():
         shutil.rmtree(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     log = out.parent / f"{out.name}.stderr.txt"
-    code, peak, wall = bench.wait_within(bench.launch(command(n, tolerance, args, out), log), budget)
+    code, peak, wall = bench.wait_within(bench.launch(command(n, tolerance, build, out), log), budget)
     if code is None:
         return {"status": "over the timeout", "peak_MiB": peak, "note": f"killed after {budget:g} s"}
     result_file = out / "result.json"
@@ -142,35 +190,41 @@ def run_once(n: int, tolerance: float, args, out: pathlib.Path, budget: float) -
             "position_error_m": result.get("position_error_m"), "positions": bench.read_positions(out), "note": ""}
 
 
-def measure_size(n: int, args, out: pathlib.Path) -> dict:
+def folder(build: Build, n: int, out: pathlib.Path) -> pathlib.Path:
+    return out / f"N{n}" / f"{build.label}-T{build.threads}"
+
+
+def measure_size(n: int, build: Build, args, out: pathlib.Path) -> dict:
     """Up to --runs runs of one size, all within --timeout; the row of its medians."""
     runs, spent = [], 0.0
+    row = {"N": n, "build": build.label, "threads": build.threads}
     while len(runs) < args.runs:
         left = args.timeout - spent
         if runs and runs[-1]["wall_s"] > left:  # one more would not fit in the timeout
             break
-        run = run_once(n, TOLERANCE_N, args, out / f"N{n}" / f"run{len(runs) + 1}", left)
-        print(f"  N={n} run {len(runs) + 1}: {run['status']}, {run.get('wall_s', '-')} s", file=sys.stderr)
+        run = run_once(n, TOLERANCE_N, build, folder(build, n, out) / f"run{len(runs) + 1}", left)
+        print(f"  N={n} {build.name()} run {len(runs) + 1}: {run['status']}, {run.get('wall_s', '-')} s",
+              file=sys.stderr)
         if run["status"] != "converged":
             if not runs:
-                return dict(run, N=n, nodes=n * n, runs=0)
+                return dict(run, **row, nodes=n * n, runs=0)
             break
         runs.append(run)
         spent += run["wall_s"]
     first = runs[0]
-    return {"N": n, "nodes": first["nodes"], "status": "converged", "runs": len(runs),
-            "wall_s": statistics.median(r["wall_s"] for r in runs),
-            "solve_s": statistics.median(r["solve_s"] for r in runs),
-            "iterations": first["iterations"], "linear_solver": first["linear_solver"],
-            "cg_iterations": first["cg_iterations"], "peak_MiB": max(r["peak_MiB"] for r in runs),
-            "position_error_m": first["position_error_m"], "positions": first["positions"], "note": ""}
+    return dict(row, nodes=first["nodes"], status="converged", runs=len(runs),
+                wall_s=statistics.median(r["wall_s"] for r in runs),
+                solve_s=statistics.median(r["solve_s"] for r in runs),
+                iterations=first["iterations"], linear_solver=first["linear_solver"],
+                cg_iterations=first["cg_iterations"], peak_MiB=max(r["peak_MiB"] for r in runs),
+                position_error_m=first["position_error_m"], positions=first["positions"], note="")
 
 
-def add_measured_distance(row: dict, args, out: pathlib.Path) -> None:
+def add_measured_distance(row: dict, build: Build, args, out: pathlib.Path) -> None:
     """The first run's largest node distance from newton at --reference-tol, where affordable."""
     if row["status"] != "converged" or row["N"] > args.reference_max:
         return
-    ref = run_once(row["N"], args.reference_tol, args, out / f"N{row['N']}" / "reference", args.timeout)
+    ref = run_once(row["N"], args.reference_tol, build, folder(build, row["N"], out) / "reference", args.timeout)
     if ref.get("positions") is None:
         row["note"] = f"reference {ref['status']}"
         return
@@ -178,17 +232,22 @@ def add_measured_distance(row: dict, args, out: pathlib.Path) -> None:
 
 
 def measure(args, out: pathlib.Path) -> list:
+    """Every size with every build, smaller sizes first; a build over the timeout runs no larger size."""
     rows = []
     for n in args.sizes:
-        reached = [r for r in rows if r["status"] == "over the timeout"]
-        if reached:
-            rows.append({"N": n, "nodes": n * n, "status": "not run", "runs": 0,
-                         "note": f"N={reached[0]['N']} was already over the timeout ({args.timeout:g} s)"})
-            continue
-        row = measure_size(n, args, out)
-        add_measured_distance(row, args, out)
-        row.pop("positions", None)
-        rows.append(row)
+        for build in builds(args):
+            reached = [r for r in rows if r["status"] == "over the timeout"
+                       and (r["build"], r["threads"]) == (build.label, build.threads)]
+            if reached:
+                rows.append({"N": n, "build": build.label, "threads": build.threads, "nodes": n * n,
+                             "status": "not run", "runs": 0,
+                             "note": f"N={reached[0]['N']} was already over the timeout ({args.timeout:g} s)"})
+                continue
+            row = measure_size(n, build, args, out)
+            if build.label == "this" and build.threads == args.threads[0]:
+                add_measured_distance(row, build, args, out)
+            row.pop("positions", None)
+            rows.append(row)
     return rows
 
 
@@ -205,23 +264,28 @@ def ratio_cell(row: dict) -> str:
 
 
 def table(rows: list) -> list:
-    lines = ["| N | nodes | status | runs | wall s (median) | solve s (median) | iterations | linear solve "
-             "| CG iterations | peak MiB | position_error_m | measured distance (m) | estimate / measured | note |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| N | build | threads | nodes | status | runs | wall s (median) | solve s (median) | iterations "
+             "| linear solve | CG iterations | peak MiB | position_error_m | measured distance (m) "
+             "| estimate / measured | note |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append("| " + " | ".join([
-            str(r["N"]), str(r["nodes"]), r["status"], str(r["runs"]), cell(r, "wall_s", ".3g"),
-            cell(r, "solve_s", ".3g"), cell(r, "iterations", "d"), r.get("linear_solver") or "",
-            cell(r, "cg_iterations", "d"), cell(r, "peak_MiB", ".0f"),
+            str(r["N"]), r["build"], str(r["threads"]), str(r["nodes"]), r["status"], str(r["runs"]),
+            cell(r, "wall_s", ".3g"), cell(r, "solve_s", ".3g"), cell(r, "iterations", "d"),
+            r.get("linear_solver") or "", cell(r, "cg_iterations", "d"), cell(r, "peak_MiB", ".0f"),
             cell(r, "position_error_m", ".2e"), cell(r, "measured_distance_m", ".2e"), ratio_cell(r),
             r.get("note", "")]) + " |")
     return lines
 
 
+def of_build(rows: list, build: Build) -> list:
+    return [r for r in rows if (r["build"], r["threads"]) == (build.label, build.threads)]
+
+
 def fits(rows: list) -> list:
-    done = [r for r in rows if r["status"] == "converged"]
     lines = []
     for key, what in (("solve_s", "solve seconds"), ("wall_s", "wall seconds")):
+        done = [r for r in rows if r["status"] == "converged"]
         p = fit_exponent([(r["nodes"], r[key]) for r in done])
         over = ", ".join(str(r["N"]) for r in done)
         lines.append(f"- {what} ~ nodes^p: p = {p:.2f} (least squares over N = {over})" if p is not None
@@ -232,13 +296,40 @@ def fits(rows: list) -> list:
     return lines
 
 
+def speed_ups(rows: list, slow: Build, fast: Build) -> list:
+    """Per N where both finished: slow's seconds over fast's, wall and solve."""
+    lines = []
+    fast_rows = {r["N"]: r for r in of_build(rows, fast) if r["status"] == "converged"}
+    for r in of_build(rows, slow):
+        f = fast_rows.get(r["N"])
+        if r["status"] == "converged" and f:
+            lines.append(f"- N={r['N']}: {fast.name()} against {slow.name()}: {r['wall_s'] / f['wall_s']:.2f} x "
+                         f"faster (wall seconds), {r['solve_s'] / f['solve_s']:.2f} x (solve seconds)")
+    return lines
+
+
+def summary(rows: list, args) -> list:
+    every = builds(args)
+    lines = []
+    for build in every:
+        lines += [f"{build.name()}:", ""] + fits(of_build(rows, build)) + [""]
+    first = every[0]
+    for build in every[1:]:
+        slow, fast = (build, first) if build.label == "baseline" else (first, build)
+        lines += speed_ups(rows, slow, fast)
+    return lines
+
+
 def report(rows: list, args, load_before: tuple, load_after: tuple) -> str:
+    threads = ",".join(str(t) for t in args.threads)
     head = ["# Dome scaling, newton to 1e-6 N", "",
             f"`bench_solvers.py {' '.join(sys.argv[1:])}`, {bench.fabform_version()}, {os.cpu_count()} cores, "
-            f"{args.threads} thread(s), linear solve {args.linear_solver}; timeout {args.timeout:g} s a size; load average "
+            f"threads {threads}, linear solve {args.linear_solver}, continuation levels {args.continuation}"
+            + (f", baseline {args.baseline}" if args.baseline else "")
+            + f"; timeout {args.timeout:g} s a size and build; load average "
             f"{load_before[0]:.2f} before, {load_after[0]:.2f} after (a shared machine: timings under load). "
             f"Distances measured from newton at {args.reference_tol:g} N where N <= {args.reference_max}.", ""]
-    return "\n".join(head + table(rows) + [""] + fits(rows)) + "\n"
+    return "\n".join(head + table(rows) + [""] + summary(rows, args)) + "\n"
 
 
 def write_csv(rows: list, path: pathlib.Path) -> None:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "fabform/geometry/point_grid.hpp"
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/spring_path.hpp"
 
@@ -56,16 +57,22 @@ double reach_m(const Fabric& fabric, const std::vector<Eigen::Vector3d>& x, int 
   return reach;
 }
 
+// Each vertex takes the pressure of the nearest pressing node within that node's reach (the
+// first such node where several are as near).
 std::vector<double> vertex_pressure(const TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& x,
                                     const std::vector<int>& pressing, const std::vector<double>& reach,
                                     const std::vector<double>& node_Pa) {
+  std::vector<Eigen::Vector3d> at(pressing.size());
+  for (std::size_t n = 0; n < pressing.size(); ++n) at[n] = x[static_cast<std::size_t>(pressing[n])];
+  const PointGrid grid(at, reach.empty() ? 0.0 : *std::max_element(reach.begin(), reach.end()));
   std::vector<double> pressure(mesh.vertices.size(), 0.0);
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     double nearest = -1.0;
-    for (std::size_t n = 0; n < pressing.size(); ++n) {
-      const auto k = static_cast<std::size_t>(pressing[n]);
-      const double d = (mesh.vertices[v] - x[k]).norm();
-      if (d <= reach[n] && (nearest < 0.0 || d < nearest)) nearest = d, pressure[v] = node_Pa[k];
+    for (const int n : grid.near(mesh.vertices[v])) {
+      const auto i = static_cast<std::size_t>(n);
+      const double d = (mesh.vertices[v] - at[i]).norm();
+      if (d <= reach[i] && (nearest < 0.0 || d < nearest))
+        nearest = d, pressure[v] = node_Pa[static_cast<std::size_t>(pressing[i])];
     }
   }
   return pressure;

@@ -176,10 +176,16 @@ Eigen::Vector3d RigidBody::feature_normal(int triangle, TriangleFeature feature)
   return face_normals_[triangle];
 }
 
+// A closest-point query first looks this share of the body's size around the point.
+constexpr double kNearShare = 0.02;
+
 SurfacePoint RigidBody::surface_point_on(int triangle, const Eigen::Vector3d& p) const {
   const auto& tri = mesh_.triangles[triangle];
   const auto& V = mesh_.vertices;
-  const TriangleClosest c = closest_point_on_triangle(p, V[tri[0]], V[tri[1]], V[tri[2]]);
+  return surface_point_from(triangle, p, closest_point_on_triangle(p, V[tri[0]], V[tri[1]], V[tri[2]]));
+}
+
+SurfacePoint RigidBody::surface_point_from(int triangle, const Eigen::Vector3d& p, const TriangleClosest& c) const {
   SurfacePoint s;
   s.point = c.point;
   s.triangle = triangle;
@@ -212,6 +218,9 @@ SurfacePoint RigidBody::to_posed(SurfacePoint s) const {
 }
 
 SurfacePoint RigidBody::closest(const Eigen::Vector3d& p) const {
+  // An unbounded query visits candidates until a close one shrinks it; most points asked about
+  // lie near the surface, where a bounded query sees only the few triangles around them.
+  if (auto near = closest_within(p, kNearShare * box_.diagonal())) return *near;
   if (auto found = closest_within(p, std::numeric_limits<double>::infinity())) return *found;
   return to_posed(surface_point_on(0, to_placed(p)));  // only if Embree found no candidate at all
 }
@@ -224,21 +233,27 @@ std::optional<SurfacePoint> RigidBody::closest_within(const Eigen::Vector3d& p, 
 
 std::optional<SurfacePoint> RigidBody::closest_within_placed(const Eigen::Vector3d& p,
                                                              double radius) const {
-  SurfacePoint best;
-  best.distance = std::numeric_limits<double>::infinity();
   // Embree culls with float boxes and a float query point, each off by an ulp or so: keep a
   // margin so no candidate that could be closest is culled.
   const double float_error = 4.0 * std::numeric_limits<float>::epsilon() *
                              (p.cwiseAbs().maxCoeff() + box_.max.cwiseAbs().maxCoeff() +
                               (std::isfinite(radius) ? radius : 0.0));
   const double margin = 1e-6 * box_.diagonal() + float_error + 1e-12;
+  // Candidates are many and only the closest is kept: each gets its distance alone, and the
+  // closest its normal and side once, at the end.
+  int best = -1;
+  TriangleClosest best_point;
+  double best_distance = std::numeric_limits<double>::infinity();
+  const auto& V = mesh_.vertices;
   bvh_->visit_near(p, radius + margin, [&](int triangle) {
-    const SurfacePoint s = surface_point_on(triangle, p);
-    if (s.distance < best.distance) best = s;
-    return std::min(radius, best.distance) + margin;
+    const auto& tri = mesh_.triangles[static_cast<std::size_t>(triangle)];
+    const TriangleClosest c = closest_point_on_triangle(p, V[tri[0]], V[tri[1]], V[tri[2]]);
+    if (const double distance = (p - c.point).norm(); distance < best_distance)
+      best = triangle, best_point = c, best_distance = distance;
+    return std::min(radius, best_distance) + margin;
   });
-  if (best.triangle < 0 || best.distance > radius) return std::nullopt;
-  return best;
+  if (best < 0 || best_distance > radius) return std::nullopt;
+  return surface_point_from(best, p, best_point);
 }
 
 std::optional<SurfacePoint> RigidBody::first_entry(const Eigen::Vector3d& from,

@@ -6,6 +6,7 @@ within a factor of 3 of the measured distance, and a size over the timeout repor
 with the larger sizes after it not run."""
 import csv
 import io
+import json
 import os
 import pathlib
 import subprocess
@@ -34,13 +35,18 @@ class Options(unittest.TestCase):
         self.assertEqual(args.sizes, [101, 201, 401, 1001])
         self.assertEqual(args.timeout, 600.0)
 
+    def test_thread_counts_keep_their_order(self):
+        self.assertEqual(bench_scale.parse_args(["--scale", "--threads", "2,1,2"]).threads, [2, 1])
+
     def test_sizes_are_sorted_without_duplicates(self):
         self.assertEqual(bench_scale.parse_args(["--scale", "--sizes", "201,101,201"]).sizes, [101, 201])
 
     def test_bad_options_exit_2(self):
         for bad in (["--sizes", "abc"], ["--sizes", ""], ["--sizes", "2"], ["--sizes", "10002"],
                     ["--timeout", "0"], ["--timeout", "-5"], ["--timeout", "nan"], ["--timeout", "soon"],
-                    ["--runs", "0"], ["--threads", "0"], ["--reference-tol", "0"], ["--linear-solver", "lu"]):
+                    ["--runs", "0"], ["--threads", "0"], ["--threads", "1,x"], ["--threads", "65"],
+                    ["--reference-tol", "0"], ["--linear-solver", "lu"], ["--continuation", "11"],
+                    ["--continuation", "-1"], ["--baseline", "/nonexistent/fabform"]):
             with self.subTest(bad=bad):
                 self.assertEqual(exit_status(["--scale", *bad]), 2)
 
@@ -105,6 +111,27 @@ class TinyDomes(unittest.TestCase):
         self.assertEqual([r["linear_solver"] for r in rows], ["multigrid", "multigrid"])
         self.assertTrue(all(int(r["cg_iterations"]) >= int(r["iterations"]) for r in rows), rows)
         self.assertIn("linear solve multigrid", text)
+
+    def test_thread_counts_and_a_baseline_each_get_rows_and_a_speed_up(self):
+        # The baseline is this binary: the same work, so its time ratio is near 1 on any machine.
+        with tempfile.TemporaryDirectory() as out:
+            rows, text = self.scale(out, "--sizes", "11,21", "--runs", "1", "--timeout", "120",
+                                    "--reference-max", "0", "--threads", "1,2", "--continuation", "1",
+                                    "--baseline", str(BINARY))
+            # The baseline runs with none of the --set options: no coarser grid first.
+            solved = {d.name: json.loads((d / "run1" / "result.json").read_text())
+                      for d in (pathlib.Path(out) / "N21").iterdir()}
+        self.assertEqual([(r["N"], r["build"], r["threads"]) for r in rows],
+                         [(n, b, t) for n in ("11", "21") for b, t in (("this", "1"), ("this", "2"), ("baseline", "1"))])
+        self.assertTrue(all(r["status"] == "converged" for r in rows), rows)
+        for n in (11, 21):
+            self.assertIn(f"- N={n}: this, 2 thread(s) against this, 1 thread(s): ", text)
+            self.assertIn(f"- N={n}: this, 1 thread(s) against baseline, 1 thread(s): ", text)
+        self.assertIn("continuation levels 1", text)
+        self.assertEqual(sorted(solved), ["baseline-T1", "this-T1", "this-T2"])
+        self.assertEqual([c["divisions"] for c in solved["this-T1"]["continuation"]], [[10, 10]])
+        self.assertEqual(solved["this-T2"]["threads"], 2)
+        self.assertNotIn("continuation", solved["baseline-T1"])
 
     def test_a_size_over_the_timeout_is_reported_and_larger_ones_not_run(self):
         with tempfile.TemporaryDirectory() as out:

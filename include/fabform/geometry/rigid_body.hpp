@@ -91,6 +91,7 @@ class RigidBody {
   Eigen::Vector3d feature_normal(int triangle, TriangleFeature feature) const;
   bool on_rim(int triangle, TriangleFeature feature) const;
   SurfacePoint surface_point_on(int triangle, const Eigen::Vector3d& p) const;
+  SurfacePoint surface_point_from(int triangle, const Eigen::Vector3d& p, const TriangleClosest& c) const;
   std::optional<SurfacePoint> closest_within_placed(const Eigen::Vector3d& p, double radius) const;
   std::optional<SurfacePoint> first_entry_placed(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
   Eigen::Vector3d to_placed(const Eigen::Vector3d& p) const { return moved_ ? Eigen::Vector3d(inverse_ * p) : p; }
