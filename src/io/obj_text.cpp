@@ -1,12 +1,11 @@
 #include "fabform/io/obj_text.hpp"
 
-#include <sstream>
+#include "fabform/io/number_text.hpp"
 
 namespace fabform {
 
 std::string obj_text(const TriangleMesh& mesh, const std::string& comment) {
-  std::ostringstream obj;
-  obj.precision(17);
+  NumberText obj(17);
   if (!comment.empty()) obj << "# " << comment << '\n';
   for (const auto& v : mesh.vertices) obj << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
   for (const auto& t : mesh.triangles) obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "fabform/error.hpp"
+#include "fabform/io/number_text.hpp"
 
 namespace fabform {
 namespace {
@@ -12,8 +13,7 @@ namespace {
 // One vertex per node, its texture coordinate the node's; faces are triangles, "f a/a b/b c/c".
 std::string textured_obj(const std::string& name, const char* what, const std::vector<Eigen::Vector3d>& vertices,
                          const std::vector<Eigen::Vector2d>& uv, const std::vector<std::array<int, 3>>& triangles) {
-  std::ostringstream out;
-  out.precision(12);
+  NumberText out(12);
   out << "# fabform " << FABFORM_VERSION << ": " << what << "\nmtllib " << name << ".mtl\n";
   for (const auto& v : vertices) out << "v " << v.x() << ' ' << v.y() << ' ' << v.z() << '\n';
   for (const auto& t : uv) out << "vt " << t.x() << ' ' << t.y() << '\n';

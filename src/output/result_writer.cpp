@@ -13,6 +13,7 @@
 #include "fabform/error.hpp"
 #include "fabform/model/force_scale.hpp"
 #include "fabform/output/checkpoint.hpp"
+#include "fabform/io/number_text.hpp"
 #include "fabform/io/obj_text.hpp"
 #include "fabform/io/png_image.hpp"
 #include "fabform/output/print_map_files.hpp"
@@ -219,8 +220,7 @@ std::string result_json(const RunRecord& run, const StateFigures& state, const C
 
 // A run in load steps numbers its iterations within each step: a first column says which.
 std::string convergence_csv(const Summary& s, bool in_steps) {
-  std::ostringstream out;
-  out.precision(10);
+  NumberText out(10);
   out << (in_steps ? "step," : "") << "iteration,residual_N,seconds,contact_nodes\n";
   for (const IterationRecord& r : s.history) {
     if (in_steps) out << r.step << ',';
@@ -230,8 +230,7 @@ std::string convergence_csv(const Summary& s, bool in_steps) {
 }
 
 std::string fabric_obj(const RunRecord& run) {
-  std::ostringstream out;
-  out.precision(12);
+  NumberText out(12);
   out << "# fabform " << FABFORM_VERSION << ": formed fabric of scene " << run.scene.name
       << " (metres)\n";
   for (const auto& x : run.state.x) out << "v " << x.x() << ' ' << x.y() << ' ' << x.z() << '\n';
@@ -261,7 +260,7 @@ std::string bodies_obj(const RunRecord& run) {
                                               " where the run left them (metres)");
 }
 
-void vtk_field(std::ostringstream& out, const char* name, const std::vector<double>& values) {
+void vtk_field(NumberText& out, const char* name, const std::vector<double>& values) {
   out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
   for (const double v : values) out << (std::isfinite(v) ? v : 0.0) << '\n';
 }
@@ -286,8 +285,7 @@ std::vector<PointField> fabric_cell_fields(const CellDeformation& d) {
 }
 
 std::string fabric_vtk(const RunRecord& run, const StateFigures& state, const CellFigures& cells) {
-  std::ostringstream out;
-  out.precision(12);
+  NumberText out(12);
   const auto& x = run.state.x;
   const std::vector<Face>& faces = run.model.fabric.faces();
   out << "# vtk DataFile Version 3.0\nfabform " << run.scene.name << " formed fabric\nASCII\n"
@@ -315,8 +313,7 @@ std::string bodies_vtk(const RunRecord& run, const ContactPressure& on_bodies) {
   std::vector<double> pressure;
   for (const std::vector<double>& body : on_bodies.body_vertex_Pa)
     pressure.insert(pressure.end(), body.begin(), body.end());
-  std::ostringstream out;
-  out.precision(12);
+  NumberText out(12);
   out << "# vtk DataFile Version 3.0\nfabform " << run.scene.name << " bodies\nASCII\n"
       << "DATASET POLYDATA\nPOINTS " << all.vertices.size() << " double\n";
   for (const auto& p : all.vertices) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
@@ -351,8 +348,7 @@ void add_print_map_files(const RunRecord& run, std::vector<ResultFile>& files) {
 // that is not finite is written as 0, as in fabric.vtk.
 std::string vtp_text(const std::vector<Eigen::Vector3d>& points, const std::vector<std::vector<int>>& polygons,
                      const std::vector<PointField>& fields) {
-  std::ostringstream out;
-  out.precision(12);
+  NumberText out(12);
   out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "<PolyData>\n<Piece NumberOfPoints=\"" << points.size() << "\" NumberOfPolys=\"" << polygons.size() << "\">\n"
       << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
