@@ -23,6 +23,7 @@
 #include "fabform/solver/grid_continuation.hpp"
 #include "fabform/solver/interrupt.hpp"
 #include "fabform/solver/load_steps.hpp"
+#include "fabform/thread_count.hpp"
 
 namespace fabform::cli {
 namespace {
@@ -175,6 +176,7 @@ void explain_ending(Summary* summary, const RunMonitor& monitor, const std::stri
 int run(const RunArguments& args) {
   const auto started = std::chrono::steady_clock::now();
   const RunStart start = start_of(args);
+  use_threads(start.scene.solver.threads);  // building the model checks every node in parallel too
   Model model = build_model(start.scene);  // its bodies travel in a run in load steps
   const Scene scene = with_tolerance_in_newtons(start.scene, model);
   const std::string dir = output_dir(args, scene);

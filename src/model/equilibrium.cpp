@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "fabform/model/model.hpp"
+#include "fabform/thread_count.hpp"
 
 namespace fabform {
 
@@ -56,6 +57,29 @@ Grip grip(const Eigen::Vector3d& r, AxisMask locks, const Eigen::Vector3d& norma
   return inside ? Grip::stuck : Grip::sliding;
 }
 
+// What the check finds at one node, computed on its own so that nodes can be measured in
+// parallel and summed in their order.
+struct NodeCheck {
+  double penetration_m = -std::numeric_limits<double>::infinity();  // none without a body
+  double residual_N = 0.0;
+  bool touching = false;
+  Grip grip = Grip::none;
+};
+
+NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
+                     double contact_tolerance_m, double tolerance_N) {
+  const auto k = static_cast<std::size_t>(node);
+  NodeCheck c;
+  const NearestSurface nearest = nearest_surface(model, x[k]);
+  c.touching = nearest.body >= 0 && nearest.point.distance <= contact_tolerance_m;
+  if (nearest.body >= 0) c.penetration_m = -nearest.point.signed_distance;
+  const Eigen::Vector3d r = node_force(model, x, node);
+  const double friction = c.touching ? model.bodies[static_cast<std::size_t>(nearest.body)].friction() : 0.0;
+  c.residual_N = unbalanced_force(r, model.locks[k], c.touching ? &nearest.point.normal : nullptr, friction).norm();
+  if (c.touching) c.grip = grip(r, model.locks[k], nearest.point.normal, friction, tolerance_N);
+  return c;
+}
+
 }  // namespace
 
 EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eigen::Vector3d>& x,
@@ -70,21 +94,19 @@ EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eige
       report.worst_node = static_cast<int>(k);
       return report;
     }
-    const NearestSurface nearest = nearest_surface(model, x[k]);
-    const bool touching = nearest.body >= 0 && nearest.point.distance <= contact_tolerance_m;
-    if (nearest.body >= 0)
-      report.max_penetration_m = std::max(report.max_penetration_m, -nearest.point.signed_distance);
-    const Eigen::Vector3d r = node_force(model, x, static_cast<int>(k));
-    const double friction = touching ? model.bodies[static_cast<std::size_t>(nearest.body)].friction() : 0.0;
-    report.residual_N[k] =
-        unbalanced_force(r, model.locks[k], touching ? &nearest.point.normal : nullptr, friction).norm();
-    report.contact[k] = touching ? 1 : 0;
-    report.contact_nodes += touching ? 1 : 0;
-    if (touching) {
-      const Grip g = grip(r, model.locks[k], nearest.point.normal, friction, tolerance_N);
-      report.sliding_nodes += g == Grip::sliding ? 1 : 0;
-      report.stuck_nodes += g == Grip::stuck ? 1 : 0;
-    }
+  }
+  std::vector<NodeCheck> checks(n);
+#pragma omp parallel for schedule(dynamic, 256) if (n >= kMinParallelItems)
+  for (int k = 0; k < model.node_count(); ++k)
+    checks[static_cast<std::size_t>(k)] = check_node(model, x, k, contact_tolerance_m, tolerance_N);
+  for (std::size_t k = 0; k < n; ++k) {
+    const NodeCheck& c = checks[k];
+    report.max_penetration_m = std::max(report.max_penetration_m, c.penetration_m);
+    report.residual_N[k] = c.residual_N;
+    report.contact[k] = c.touching ? 1 : 0;
+    report.contact_nodes += c.touching ? 1 : 0;
+    report.sliding_nodes += c.grip == Grip::sliding ? 1 : 0;
+    report.stuck_nodes += c.grip == Grip::stuck ? 1 : 0;
     if (report.residual_N[k] > report.max_residual_N || report.worst_node < 0) {
       report.max_residual_N = report.residual_N[k];
       report.worst_node = static_cast<int>(k);

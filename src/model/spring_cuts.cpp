@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "fabform/model/spring_path.hpp"
+#include "fabform/thread_count.hpp"
 
 namespace fabform {
 namespace {
@@ -43,21 +44,35 @@ double deepest_into(const Model& model, const Eigen::Vector3d& a, const Eigen::V
   return deepest;
 }
 
+struct SpringDepth {
+  bool wrapped = false;  // over a body's edge, in two legs
+  double depth_m = 0.0;  // how deep it (or a leg) reaches into a body
+};
+
+SpringDepth spring_depth(const Model& model, const Spring& spring, const std::vector<Eigen::Vector3d>& x) {
+  if (spring.kind == SpringKind::bend) return {};  // spans two cells: its segment is no fabric
+  const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
+  const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
+  if (!a.allFinite() || !b.allFinite()) return {};
+  // A spring wrapped over an edge runs in two legs, each of which may cut another feature.
+  const auto wrap = spring_wrap(model, spring, a, b);
+  if (!wrap) return {false, deepest_into(model, a, b)};
+  return {true, std::max(deepest_into(model, a, wrap->point), deepest_into(model, wrap->point, b))};
+}
+
 }  // namespace
 
 SpringCuts find_spring_cuts(const Model& model, const std::vector<Eigen::Vector3d>& x) {
-  SpringCuts cuts;
   const std::vector<Spring>& springs = model.fabric.springs();
+  // Each spring measured on its own (in parallel), then counted in order.
+  std::vector<SpringDepth> measured(springs.size());
+#pragma omp parallel for schedule(dynamic, 64) if (springs.size() >= kMinParallelItems)
+  for (int s = 0; s < static_cast<int>(springs.size()); ++s)
+    measured[static_cast<std::size_t>(s)] = spring_depth(model, springs[static_cast<std::size_t>(s)], x);
+  SpringCuts cuts;
   for (std::size_t s = 0; s < springs.size(); ++s) {
-    if (springs[s].kind == SpringKind::bend) continue;  // spans two cells: its segment is no fabric
-    const Eigen::Vector3d& a = x[static_cast<std::size_t>(springs[s].a)];
-    const Eigen::Vector3d& b = x[static_cast<std::size_t>(springs[s].b)];
-    if (!a.allFinite() || !b.allFinite()) continue;
-    // A spring wrapped over an edge runs in two legs, each of which may cut another feature.
-    const auto wrap = spring_wrap(model, springs[s], a, b);
-    cuts.over_edges += wrap ? 1 : 0;
-    const double depth = wrap ? std::max(deepest_into(model, a, wrap->point), deepest_into(model, wrap->point, b))
-                              : deepest_into(model, a, b);
+    cuts.over_edges += measured[s].wrapped ? 1 : 0;
+    const double depth = measured[s].depth_m;
     if (depth <= kCutShare * springs[s].rest_length) continue;  // a chord of a curve, or grazing
     ++cuts.springs;
     if (depth > cuts.deepest_m) cuts.deepest_m = depth, cuts.deepest_spring = static_cast<int>(s);

@@ -18,6 +18,7 @@
 #include "fabform/model/wind.hpp"
 #include "fabform/scene/fabric_plausibility.hpp"
 #include "fabform/scene/memory_budget.hpp"
+#include "fabform/thread_count.hpp"
 
 namespace fabform {
 namespace {
@@ -180,26 +181,39 @@ std::string orientation_hint(const RigidBody& body) {
              : "; the initial shape must clear it";
 }
 
+// The first of `count` items (in order) for which `fails` holds, or -1; the items are tried in
+// parallel, so the answer is the serial loop's whatever the thread count.
+template <class Fails>
+int first_failing(int count, const Fails& fails) {
+  std::vector<unsigned char> failed(static_cast<std::size_t>(count), 0);
+#pragma omp parallel for schedule(dynamic, 256) if (count >= kMinParallelItems)
+  for (int i = 0; i < count; ++i) failed[static_cast<std::size_t>(i)] = fails(i) ? 1 : 0;
+  const auto first = std::find(failed.begin(), failed.end(), 1);
+  return first == failed.end() ? -1 : static_cast<int>(first - failed.begin());
+}
+
 // Seed 003 starts from a deformation with "no contact or intersection" with the body.
 void check_clear_start(const Scene& scene, const Model& model) {
+  const auto at = [&](int k) -> const Eigen::Vector3d& { return model.start[static_cast<std::size_t>(k)]; };
+  const std::vector<Spring>& springs = model.fabric.springs();
   for (const RigidBody& body : model.bodies) {
-    for (int k = 0; k < model.node_count(); ++k) {
-      const SurfacePoint s = body.closest(model.start[static_cast<std::size_t>(k)]);
-      if (s.signed_distance <= 0.0) {
-        char depth[64];
-        std::snprintf(depth, sizeof depth, "%.3g", -s.signed_distance);
-        throw InputError(scene.initial_where, model.fabric.node_name(k) + " starts inside body '" +
-                                                  body.name() + "' (" + depth + " m deep)" +
-                                                  orientation_hint(body));
-      }
+    const int inside = first_failing(model.node_count(), [&](int k) { return body.closest(at(k)).signed_distance <= 0.0; });
+    if (inside >= 0) {
+      char depth[64];
+      std::snprintf(depth, sizeof depth, "%.3g", -body.closest(at(inside)).signed_distance);
+      throw InputError(scene.initial_where, model.fabric.node_name(inside) + " starts inside body '" + body.name() +
+                                                "' (" + depth + " m deep)" + orientation_hint(body));
     }
-    for (const Spring& spring : model.fabric.springs())
-      if (body.segment_crosses(model.start[static_cast<std::size_t>(spring.a)],
-                               model.start[static_cast<std::size_t>(spring.b)]))
-        throw InputError(scene.initial_where,
-                         "the spring from " + model.fabric.node_name(spring.a) + " to " +
-                             model.fabric.node_name(spring.b) + " passes through body '" +
-                             body.name() + "'; the initial shape must clear it");
+    const int through = first_failing(static_cast<int>(springs.size()), [&](int s) {
+      const Spring& spring = springs[static_cast<std::size_t>(s)];
+      return body.segment_crosses(at(spring.a), at(spring.b));
+    });
+    if (through >= 0) {
+      const Spring& spring = springs[static_cast<std::size_t>(through)];
+      throw InputError(scene.initial_where, "the spring from " + model.fabric.node_name(spring.a) + " to " +
+                                                model.fabric.node_name(spring.b) + " passes through body '" +
+                                                body.name() + "'; the initial shape must clear it");
+    }
   }
 }
 
