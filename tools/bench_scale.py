@@ -11,9 +11,10 @@ What it does: for each N in --sizes (nodes a side; default 101,201,401,1001) it 
 (with `--set solver.linear_solver=` --linear-solver: auto, cholesky or multigrid, and
 `--set solver.continuation_levels=` --continuation when it is not 0) once for each thread count
 in --threads, each up to --runs times (again only while the size's runs so far and one more fit
-in --timeout: several runs where affordable, medians), and records per N and thread count: wall seconds (result.json's
-wall_seconds, the whole run) and solve seconds (solve_seconds), medians over the runs;
-iterations; peak memory (the largest resident size of the runs, from wait4's rusage); and
+in --timeout: several runs where affordable, medians), and records per N and thread count:
+wall seconds (result.json's wall_seconds, the whole run) and solve seconds (solve_seconds, plus
+the coarser grids' with --continuation), medians over the runs; iterations (on the scene's own
+grid); peak memory (the largest resident size of the runs, from wait4's rusage); and
 result.json's position_error_m, the estimate of the largest node distance from the exact rest.
 Where N <= --reference-max it also solves to --reference-tol (the reference) and measures the
 largest node distance of the first run from it, the figure the estimate is checked against
@@ -184,8 +185,10 @@ def run_once(n: int, tolerance: float, build: Build, out: pathlib.Path, budget: 
     result = json.loads(result_file.read_text()) if code in (0, 3) and result_file.exists() else {}
     if not result:
         return {"status": "failed", "peak_MiB": peak, "note": bench.last_line(log) or f"exit {code}"}
+    coarser = sum(level["solve_seconds"] for level in result.get("continuation", []))
     return {"status": bench.status_of(code, result), "peak_MiB": peak, "wall_s": result["wall_seconds"],
-            "solve_s": result["solve_seconds"], "iterations": result["iterations"], "nodes": result["nodes"],
+            "solve_s": result["solve_seconds"] + coarser, "iterations": result["iterations"],
+            "nodes": result["nodes"],
             "linear_solver": result.get("linear_solver"), "cg_iterations": result.get("linear_iterations"),
             "position_error_m": result.get("position_error_m"), "positions": bench.read_positions(out), "note": ""}
 
