@@ -104,15 +104,9 @@ void add_mass(const Scene& scene, const std::optional<GivenValue>& mass, Model* 
   model->terms.push_back(std::make_shared<Gravity>(model->fabric, mass->value, scene.gravity.acceleration_m_s2));
 }
 
-RigidBody build_body(const BodySpec& spec, std::vector<std::string>* warnings) {
-  require_file(spec.mesh_path, spec.mesh_where, "mesh");
-  std::vector<std::string> read;
-  TriangleMesh mesh = place(read_mesh(spec.mesh_path, &read), spec.placement);
-  for (const std::string& w : read) warnings->push_back(spec.mesh_path + ": " + w);
-  if (!within_range(mesh.vertices))
-    throw InputError(spec.where, "the placed mesh reaches beyond 1e6 m: check units, scale and translation");
+RigidBody body_of(const BodySpec& spec, TriangleMesh placed) {
   try {
-    RigidBody body(spec.name, std::move(mesh), spec.friction);
+    RigidBody body(spec.name, std::move(placed), spec.friction);
     if (spec.wrap_edges_deg > 0.0) body.wrap_edges_sharper_than(spec.wrap_edges_deg);
     return body;
   } catch (const std::invalid_argument& error) {
@@ -120,9 +114,24 @@ RigidBody build_body(const BodySpec& spec, std::vector<std::string>* warnings) {
   }
 }
 
-std::vector<RigidBody> build_bodies(const Scene& scene, std::vector<std::string>* warnings) {
+RigidBody build_body(const BodySpec& spec, std::vector<std::string>* warnings) {
+  require_file(spec.mesh_path, spec.mesh_where, "mesh");
+  std::vector<std::string> read;
+  TriangleMesh mesh = place(read_mesh(spec.mesh_path, &read), spec.placement);
+  for (const std::string& w : read) warnings->push_back(spec.mesh_path + ": " + w);
+  if (!within_range(mesh.vertices))
+    throw InputError(spec.where, "the placed mesh reaches beyond 1e6 m: check units, scale and translation");
+  return body_of(spec, std::move(mesh));
+}
+
+// The scene's bodies, read from their files, or, given a model of the same scene, from its
+// meshes as placed (and its read warnings).
+std::vector<RigidBody> build_bodies(const Scene& scene, const Model* placed_from, std::vector<std::string>* warnings) {
   std::vector<RigidBody> bodies;
-  for (const BodySpec& spec : scene.bodies) bodies.push_back(build_body(spec, warnings));
+  if (placed_from) *warnings = placed_from->read_warnings;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    bodies.push_back(placed_from ? body_of(scene.bodies[b], placed_from->bodies[b].mesh())
+                                 : build_body(scene.bodies[b], warnings));
   return bodies;
 }
 
@@ -423,13 +432,15 @@ Scene with_tolerance_in_newtons(Scene scene, const Model& model) {
   return scene;
 }
 
-Model build_model(const Scene& scene) {
+Model build_model(const Scene& scene) { return build_model(scene, nullptr); }
+
+Model build_model(const Scene& scene, const Model* placed_from) {
   check_memory_budget(scene);
   Fabric fabric = build_fabric(scene);
   const MaterialFile warp = read_material(scene, scene.warp_path, scene.warp_where);
   const MaterialFile weft = read_material(scene, scene.weft_path, scene.weft_where);
   std::vector<std::string> read_warnings;
-  Model model{fabric, warp.table, weft.table, build_locks(scene, fabric), build_bodies(scene, &read_warnings),
+  Model model{fabric, warp.table, weft.table, build_locks(scene, fabric), build_bodies(scene, placed_from, &read_warnings),
               build_start(scene, fabric)};
   model.read_warnings = std::move(read_warnings);
   model.paths = build_paths(scene, model.bodies);

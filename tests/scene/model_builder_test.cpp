@@ -2,6 +2,8 @@
 // with the file and line to fix.
 #include "fabform/scene/model_builder.hpp"
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 
@@ -179,6 +181,23 @@ TEST_F(ModelBuilder, TwoBodiesInTheirOwnUnitsBothHoldTheFabric) {
   const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-8);
   EXPECT_LE(check.max_residual_N, options.tolerance_N);
   EXPECT_LE(check.max_penetration_m, 1e-9);  // the projections' rounding, far below a facet
+}
+
+// A coarser grid of the same scene (grid continuation) takes the bodies as the scene's model
+// placed them, without reading the mesh again: it builds with the file gone, to the same mesh.
+TEST_F(ModelBuilder, AnotherGridTakesTheBodiesAsPlaced) {
+  const Scene fine = load_scene(dir.write("scene.toml", scene("")));
+  const Model placed = build_model(fine);
+  std::filesystem::remove(dir.path("sphere.obj"));
+  Scene coarse = fine;
+  coarse.fabric.divisions_warp = coarse.fabric.divisions_weft = 5;
+  const Model level = build_model(coarse, &placed);
+  EXPECT_EQ(level.node_count(), 36);
+  ASSERT_EQ(level.bodies.size(), 1u);
+  EXPECT_EQ(level.bodies[0].mesh().vertices, placed.bodies[0].mesh().vertices);
+  EXPECT_EQ(level.bodies[0].mesh().triangles, placed.bodies[0].mesh().triangles);
+  EXPECT_EQ(level.bodies[0].name(), placed.bodies[0].name());
+  EXPECT_THROW(build_model(coarse), InputError);  // read again, the missing file is the scene's error
 }
 
 // Gravity weighs the fabric with the density its material files state; it is said in `modelled`.
