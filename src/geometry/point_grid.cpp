@@ -19,7 +19,7 @@ long long cube_coordinate(double value) {
 }  // namespace
 
 PointGrid::PointGrid(const std::vector<Eigen::Vector3d>& points, double cell)
-    : points_(points), cell_(std::isfinite(cell) && cell > 0.0 ? cell : 1.0) {
+    : cell_(std::isfinite(cell) && cell > 0.0 ? cell : 1.0) {
   binned_.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) binned_.emplace_back(key_of(points[i]), static_cast<int>(i));
   std::sort(binned_.begin(), binned_.end());

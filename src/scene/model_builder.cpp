@@ -124,11 +124,10 @@ RigidBody build_body(const BodySpec& spec, std::vector<std::string>* warnings) {
   return body_of(spec, std::move(mesh));
 }
 
-// The scene's bodies, read from their files, or, given a model of the same scene, from its
-// meshes as placed (and its read warnings).
+// The scene's bodies, read from their files (their warnings added), or, given a model of the
+// same scene, from its meshes as placed (whose warnings that model holds).
 std::vector<RigidBody> build_bodies(const Scene& scene, const Model* placed_from, std::vector<std::string>* warnings) {
   std::vector<RigidBody> bodies;
-  if (placed_from) *warnings = placed_from->read_warnings;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     bodies.push_back(placed_from ? body_of(scene.bodies[b], placed_from->bodies[b].mesh())
                                  : build_body(scene.bodies[b], warnings));

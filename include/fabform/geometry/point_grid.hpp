@@ -12,8 +12,8 @@ namespace fabform {
 
 class PointGrid {
  public:
-  /// Bins `points` (kept by reference: they must outlive the grid) in cubes of side `cell`; a
-  /// cell that is not positive and finite is taken as 1.
+  /// Bins `points` in cubes of side `cell` (it keeps their indices, not the points); a cell that
+  /// is not positive and finite is taken as 1.
   PointGrid(const std::vector<Eigen::Vector3d>& points, double cell);
 
   /// The indices of every point within `cell` of q (and of some further ones), ascending.
@@ -23,7 +23,6 @@ class PointGrid {
   using Key = std::array<long long, 3>;
   Key key_of(const Eigen::Vector3d& p) const;
 
-  const std::vector<Eigen::Vector3d>& points_;
   double cell_;
   std::vector<std::pair<Key, int>> binned_;  // (cube, point), sorted
 };
