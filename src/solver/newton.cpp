@@ -50,6 +50,9 @@ constexpr double kMaxRegularization = 1e8;
 // The range of an inexact Newton step's relative tolerance η (NewtonStep::forcing).
 constexpr double kMaxForcing = 0.1;
 constexpr double kMinForcing = 1e-8;
+// A step that measures the distance from the rest (position_error.hpp) is solved at least this
+// tightly: every step of a run that stops in metres, and the final estimate's.
+constexpr double kMeasuringForcing = 1e-4;
 
 std::vector<Eigen::Vector3d> node_forces(const Model& model, const std::vector<Eigen::Vector3d>& x) {
   std::vector<Eigen::Vector3d> forces(x.size());
@@ -107,7 +110,7 @@ class NewtonStep {
 
   /// The Newton step from the current state (nodes its force pulls off a body are released
   /// first, as the step would); none when the matrix gives no descent direction.
-  std::optional<Proposal> propose() {
+  std::optional<Proposal> propose(double loosest = kMaxForcing) {
     const std::vector<Eigen::Vector3d> stored = node_forces(model_, state_.x);
     release_pulling_nodes(model_, stored, state_);
     Proposal p{{}, lag_friction(model_, state_, stored, creep_m_), {}};
@@ -116,17 +119,17 @@ class NewtonStep {
     if (directions.used == 0) return std::nullopt;
     const Eigen::VectorXd f = reduced_forces(directions, p.forces);
     const auto step = solve(reduced_hessian(model_, state_.x, directions, p.friction.empty() ? nullptr : &p.friction),
-                            f, directions, forcing(f.norm()));
+                            f, directions, std::min(forcing(f.norm()), loosest));
     if (!step) return std::nullopt;
     p.steps = node_steps(directions, *step);
     return p;
   }
 
-  /// The largest node move of the step from the current state, which it leaves as it is (NaN
-  /// without a step).
+  /// The largest node move of the step from the current state, solved to kMeasuringForcing,
+  /// which it leaves as it is (NaN without a step).
   double next_step_size() {
     const std::vector<NodeContact> contact = state_.contact;
-    const std::optional<Proposal> p = propose();
+    const std::optional<Proposal> p = propose(kMeasuringForcing);
     state_.contact = contact;
     return p ? largest_move(p->steps) : std::nan("");
   }
@@ -145,6 +148,10 @@ class NewtonStep {
 
   /// The linear solver the steps were solved with (none before the first).
   const LinearSolver* linear_solver() const { return linear_.get(); }
+
+  /// Whether a step was solved more loosely than kMeasuringForcing (by an iterative solve), so
+  /// that the steps' sizes do not measure the distance from the rest.
+  bool steps_were_loose() const { return loose_; }
 
  private:
   // Inexact Newton (Eisenstat & Walker 1996, choice 2): an iterative solve need only cut the
@@ -180,6 +187,7 @@ class NewtonStep {
       m.diagonal().array() += mu_ * scale;
       if (!linear_->set_matrix(std::move(m), component)) continue;
       Eigen::VectorXd delta = linear_->solve(f, eta);
+      loose_ = loose_ || (eta > kMeasuringForcing && linear_->method() != LinearMethod::cholesky);
       if (delta.allFinite() && delta.dot(f) > 0.0) return delta;
     }
     mu_ = kMaxRegularization;
@@ -233,6 +241,7 @@ class NewtonStep {
   std::unique_ptr<LinearSolver> linear_;  // chosen at the first step, by its unknowns
   double last_force_norm_ = 0.0;  // ‖f‖₂ of the last step proposed (0: none yet)
   double forcing_ = kMaxForcing;  // its η
+  bool loose_ = false;  // see steps_were_loose
 };
 
 void record_linear_solver(Summary& summary, const NewtonStep& step) {
@@ -267,9 +276,9 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
     // releases nodes that pull off a body; a run that stops here keeps the state's own contact.
     std::vector<NodeContact> contact;
     if (options.tolerance_m > 0.0) contact = state.contact;
-    const std::optional<Proposal> proposal = step.propose();
+    const std::optional<Proposal> proposal = step.propose(options.tolerance_m > 0.0 ? kMeasuringForcing : kMaxForcing);
     step_sizes.push_back(proposal ? largest_move(proposal->steps) : std::nan(""));
-    const double distance = newton_position_error(step_sizes);
+    const double distance = step.steps_were_loose() ? std::nan("") : newton_position_error(step_sizes);
     if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) {
       state.contact = std::move(contact);
       return StepOutcome::stopped;
@@ -279,9 +288,11 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
     return StepOutcome::stalled;
   };
   steps.measure = [&] { return measure_state(model, state); };
-  // One more factorisation, of the final state, without moving it.
-  steps.final_position_error = [&](const Summary&) {
-    step_sizes.push_back(step.next_step_size());
+  // One more factorisation (or tight solve), of the final state, without moving it.
+  steps.final_position_error = [&](const Summary& summary) {
+    const double size = step.next_step_size();
+    if (step.steps_were_loose()) return inexact_newton_position_error(size, summary.history);
+    step_sizes.push_back(size);
     return newton_position_error(step_sizes);
   };
   steps.stall_message = stall_message;

@@ -25,15 +25,25 @@ double falling_rate(double before, double now, int entries) {
   return std::pow(now / before, 1.0 / entries);
 }
 
+// ρ read from ‖V‖∞ over the last `window` iterations or half the history; NaN under three
+// records or while ‖V‖∞ does not fall.
+double residual_rate(const std::vector<IterationRecord>& history, int window) {
+  if (history.size() < 3) return std::nan("");
+  window = std::min(window, static_cast<int>(history.size() - 1) / 2);
+  const double now = history.back().residual_N;
+  const double before = history[history.size() - 1 - static_cast<std::size_t>(window)].residual_N;
+  return falling_rate(before, now, window);
+}
+
 }  // namespace
 
 double rate_position_error(const std::vector<IterationRecord>& history, double last_move_m) {
-  if (history.size() < 3) return std::nan("");
-  const int window = std::min(kRateWindow, static_cast<int>(history.size() - 1) / 2);
-  const double now = history.back().residual_N;
-  const double before = history[history.size() - 1 - static_cast<std::size_t>(window)].residual_N;
-  const double rate = falling_rate(before, now, window);
+  const double rate = residual_rate(history, kRateWindow);
   return last_move_m * rate / (1.0 - rate);
+}
+
+double inexact_newton_position_error(double step_m, const std::vector<IterationRecord>& history) {
+  return step_m / (1.0 - residual_rate(history, kNewtonRateWindow));
 }
 
 double newton_position_error(const std::vector<double>& step_sizes) {
