@@ -40,8 +40,7 @@ constexpr int kNewtonRateWindow = 10;
 double rate_position_error(const std::vector<IterationRecord>& history, double last_move_m);
 
 /// newton's estimate when its steps were solved loosely (inexact Newton far from the rest: a
-/// loose step's size says little of the distance; on the dome at 101 × 101 nodes the last loose
-/// steps were 1e-7 m, 1e-5 m from the rest): |δ|/(1 − ρ), `step_m` the step from the current
+/// loose step leaves out the slow shapes, so its size says little of the distance): |δ|/(1 − ρ), `step_m` the step from the current
 /// state solved tightly, ρ = (‖V‖∞ now / ‖V‖∞ w iterations back)^(1/w), w the window or half the
 /// history. NaN while the history is under two iterations or ‖V‖∞ is not falling.
 double inexact_newton_position_error(double step_m, const std::vector<IterationRecord>& history);
