@@ -270,13 +270,15 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
   const auto started = std::chrono::steady_clock::now();
   NewtonStep step(model, state, options);
   std::vector<double> step_sizes;  // of the steps proposed from each state in turn
+  // Stopping in metres, each step measures the distance from the rest.
+  const double loosest = options.tolerance_m > 0.0 ? kMeasuringForcing : kMaxForcing;
   SolverSteps steps;
   steps.step = [&](Summary& summary) {
     // The step from the state last recorded measures its distance from the rest. Proposing
     // releases nodes that pull off a body; a run that stops here keeps the state's own contact.
     std::vector<NodeContact> contact;
     if (options.tolerance_m > 0.0) contact = state.contact;
-    const std::optional<Proposal> proposal = step.propose(options.tolerance_m > 0.0 ? kMeasuringForcing : kMaxForcing);
+    const std::optional<Proposal> proposal = step.propose(loosest);
     step_sizes.push_back(proposal ? largest_move(proposal->steps) : std::nan(""));
     const double distance = step.steps_were_loose() ? std::nan("") : newton_position_error(step_sizes);
     if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) {

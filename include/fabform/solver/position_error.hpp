@@ -7,13 +7,12 @@
 // to come sum to |δ|/(1 − ρ), ρ read from the last steps' sizes (on the dome at 201 × 201 nodes,
 // |δ| alone was a quarter of the distance). δ is solved tightly (newton.cpp's kMeasuringForcing)
 // even when the steps are inexact (multigrid's conjugate gradients, loose far from the rest); a
-// loose step's size says little, so after loose steps ρ is read from ‖V‖∞ instead.
-// relax and dynamic have no matrix, and a node's |V_i|
-// over its own stiffness says little (the slow shapes they leave last are held by the fabric's
-// tension alone: on the dome, 530 to 700 times further than that); their tail converges
-// linearly, and the moves still to come sum to Δ·ρ/(1 − ρ), Δ the last iteration's largest node
-// move, ρ read from ‖V‖∞ over the last iterations. Each holds while one slow shape leads; none
-// has a figure while what it reads ρ from does not fall.
+// loose step's size says little, so after loose steps ρ is read from ‖V‖∞ instead. relax and
+// dynamic have no matrix, and a node's |V_i| over its own stiffness says little (the slow shapes
+// they leave last are held by the fabric's tension alone: on the dome, 530 to 700 times further
+// than that); their tail converges linearly, and the moves still to come sum to Δ·ρ/(1 − ρ), Δ the
+// last iteration's largest node move, ρ read from ‖V‖∞ over the last iterations. Each holds while
+// one slow shape leads; none has a figure while what it reads ρ from does not fall.
 #include <vector>
 
 #include <Eigen/Core>
@@ -40,9 +39,10 @@ constexpr int kNewtonRateWindow = 10;
 double rate_position_error(const std::vector<IterationRecord>& history, double last_move_m);
 
 /// newton's estimate when its steps were solved loosely (inexact Newton far from the rest: a
-/// loose step leaves out the slow shapes, so its size says little of the distance): |δ|/(1 − ρ), `step_m` the step from the current
-/// state solved tightly, ρ = (‖V‖∞ now / ‖V‖∞ w iterations back)^(1/w), w the window or half the
-/// history. NaN while the history is under two iterations or ‖V‖∞ is not falling.
+/// loose step leaves out the slow shapes, so its size says little of the distance): |δ|/(1 − ρ),
+/// `step_m` the step from the current state solved tightly, ρ = (‖V‖∞ now / ‖V‖∞ w iterations
+/// back)^(1/w), w the window or half the history. NaN while the history is under two iterations
+/// or ‖V‖∞ is not falling.
 double inexact_newton_position_error(double step_m, const std::vector<IterationRecord>& history);
 
 /// newton's estimate from the sizes of the steps it proposed from each state in turn (m), the
