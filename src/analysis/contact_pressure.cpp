@@ -20,9 +20,9 @@ std::vector<double> tributary_areas(const Fabric& fabric, const std::vector<Eige
 }
 
 // The body's reaction on a node it touches: the nearest body's normal decides the direction.
-double reaction_N(const Model& model, const std::vector<Eigen::Vector3d>& x, int node) {
+double reaction_N(const Model& model, const std::vector<Eigen::Vector3d>& x, int node, NearbyQueries& queries) {
   const auto k = static_cast<std::size_t>(node);
-  const NearestSurface nearest = nearest_surface(model, x[k]);
+  const NearestSurface nearest = nearest_surface(model, queries, x[k]);
   if (nearest.body < 0) return 0.0;
   return pressing_force(node_force(model, x, node), model.locks[k], nearest.point.normal);
 }
@@ -89,10 +89,11 @@ ContactPressure contact_pressure(const Model& model, const std::vector<Eigen::Ve
   double force = 0.0, contact_area = 0.0;
   std::vector<int> pressing;
   std::vector<double> reach;
+  NearbyQueries queries(model.bodies);
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
     if ((!contact[i] && over_edges[i] == 0.0) || !(area[i] > 0.0)) continue;
-    const double lambda = (contact[i] ? reaction_N(model, x, k) : 0.0) + over_edges[i];
+    const double lambda = (contact[i] ? reaction_N(model, x, k, queries) : 0.0) + over_edges[i];
     p.node_Pa[i] = lambda / area[i];
     if (lambda > 0.0) force += lambda, contact_area += area[i];  // the mean is over the area that presses
     if (p.max_node < 0 || p.node_Pa[i] > p.max_Pa) p.max_Pa = p.node_Pa[i], p.max_node = k;

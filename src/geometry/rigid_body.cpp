@@ -128,8 +128,14 @@ void RigidBody::compute_edge_normals() {
 }
 
 // One edge, walked by the corners [first, last): its normal is the normalised sum of its
-// faces' normals; it is on the rim when one face has it.
+// faces' normals; it is on the rim when one face has it. Two faces that run it the same way
+// (or one, or three) leave the surface not watertight.
 void RigidBody::set_edge(const EdgeCorner* first, const EdgeCorner* last) {
+  const auto runs_up = [&](const EdgeCorner* e) {
+    const auto& tri = mesh_.triangles[e->corner / 3];
+    return tri[e->corner % 3] < tri[(e->corner % 3 + 1) % 3];
+  };
+  if (last - first != 2 || runs_up(first) == runs_up(first + 1)) watertight_ = false;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (const EdgeCorner* e = first; e != last; ++e) sum += face_normals_[e->corner / 3];
   const Eigen::Vector3d normal = normalized_or_zero(sum);
@@ -223,6 +229,18 @@ SurfacePoint RigidBody::closest(const Eigen::Vector3d& p) const {
   if (auto near = closest_within(p, kNearShare * box_.diagonal())) return *near;
   if (auto found = closest_within(p, std::numeric_limits<double>::infinity())) return *found;
   return to_posed(surface_point_on(0, to_placed(p)));  // only if Embree found no candidate at all
+}
+
+SurfacePoint RigidBody::closest(const Eigen::Vector3d& p, int near_triangle) const {
+  if (near_triangle < 0 || near_triangle >= static_cast<int>(mesh_.triangles.size())) return closest(p);
+  const Eigen::Vector3d q = to_placed(p);
+  const auto& tri = mesh_.triangles[static_cast<std::size_t>(near_triangle)];
+  const auto& V = mesh_.vertices;
+  const double bound = (q - closest_point_on_triangle(q, V[tri[0]], V[tri[1]], V[tri[2]]).point).norm();
+  // The hinted triangle lies within the bound, so the search finds it or a closer one, unless p
+  // is not finite (Embree is not asked then): closest() answers that case.
+  if (auto found = closest_within_placed(q, bound)) return to_posed(*found);
+  return closest(p);
 }
 
 std::optional<SurfacePoint> RigidBody::closest_within(const Eigen::Vector3d& p, double radius) const {

@@ -5,7 +5,6 @@
 #include <optional>
 
 #include "fabform/model/model.hpp"
-#include "fabform/thread_count.hpp"
 
 namespace fabform {
 
@@ -33,10 +32,10 @@ double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Ei
   return std::max(-remove_locked(resultant, locks).dot(normal_free) / length2, 0.0);
 }
 
-NearestSurface nearest_surface(const Model& model, const Eigen::Vector3d& p) {
+NearestSurface nearest_surface(const Model& model, NearbyQueries& queries, const Eigen::Vector3d& p) {
   NearestSurface nearest;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const SurfacePoint s = model.bodies[b].closest(p);
+    const SurfacePoint s = queries.closest(static_cast<int>(b), p);
     if (nearest.body < 0 || s.distance < nearest.point.distance) nearest = {s, static_cast<int>(b)};
   }
   return nearest;
@@ -66,11 +65,11 @@ struct NodeCheck {
   Grip grip = Grip::none;
 };
 
-NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, int node,
+NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, int node, NearbyQueries& queries,
                      double contact_tolerance_m, double tolerance_N) {
   const auto k = static_cast<std::size_t>(node);
   NodeCheck c;
-  const NearestSurface nearest = nearest_surface(model, x[k]);
+  const NearestSurface nearest = nearest_surface(model, queries, x[k]);
   c.touching = nearest.body >= 0 && nearest.point.distance <= contact_tolerance_m;
   if (nearest.body >= 0) c.penetration_m = -nearest.point.signed_distance;
   const Eigen::Vector3d r = node_force(model, x, node);
@@ -96,9 +95,9 @@ EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eige
     }
   }
   std::vector<NodeCheck> checks(n);
-#pragma omp parallel for schedule(dynamic, 256) if (n >= kMinParallelItems)
-  for (int k = 0; k < model.node_count(); ++k)
-    checks[static_cast<std::size_t>(k)] = check_node(model, x, k, contact_tolerance_m, tolerance_N);
+  for_each_nearby(model.node_count(), model.bodies, [&](int k, NearbyQueries& queries) {
+    checks[static_cast<std::size_t>(k)] = check_node(model, x, k, queries, contact_tolerance_m, tolerance_N);
+  });
   for (std::size_t k = 0; k < n; ++k) {
     const NodeCheck& c = checks[k];
     report.max_penetration_m = std::max(report.max_penetration_m, c.penetration_m);

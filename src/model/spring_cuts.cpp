@@ -1,46 +1,55 @@
 #include "fabform/model/spring_cuts.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "fabform/model/spring_path.hpp"
-#include "fabform/thread_count.hpp"
+#include "fabform/geometry/nearby_queries.hpp"
 
 namespace fabform {
 namespace {
 
 constexpr int kSamples = 32;
-constexpr double kCutShare = 0.01;  // of the spring's rest length (spring_cuts.hpp)
+constexpr double kCutShare = 0.01;      // of the spring's rest length (spring_cuts.hpp)
+constexpr double kRefinedShare = 1e-7;  // of the segment: where the search for the deepest point stops
+const double kGoldenShare = (std::sqrt(5.0) - 1.0) / 2.0;
 
-// A point of a spring that reaches into a body lies within the spring's length of its surface
-// (the spring's ends are outside): a search that near is cheap; farther, a full one.
-double depth_at(const RigidBody& body, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double t) {
-  const Eigen::Vector3d p = a + t * (b - a);
-  const auto near = body.closest_within(p, (b - a).norm());
-  return -(near ? *near : body.closest(p)).signed_distance;
+// How deep the point at t ∈ [0, 1] of the segment a–b lies inside body `body` (negative outside).
+// Successive points are near each other, which the queries make cheap.
+double depth_at(NearbyQueries& queries, int body, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double t) {
+  return -queries.closest(body, a + t * (b - a)).signed_distance;
 }
 
 // How far inside the body the segment reaches: the deepest of its sample points, then refined
-// between that sample's neighbours by a ternary search (the depth rises to a corner and falls
-// past it), to a ten-millionth of the spring.
-double depth_inside(const RigidBody& body, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+// between that sample's neighbours by a golden-section search (the depth rises to a corner and
+// falls past it), to kRefinedShare of the segment.
+double depth_inside(NearbyQueries& queries, int body, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const auto depth = [&](double t) { return depth_at(queries, body, a, b, t); };
   int best = 1;
-  double depth = depth_at(body, a, b, 1.0 / kSamples);
+  double deepest = depth(1.0 / kSamples);
   for (int k = 2; k < kSamples; ++k)
-    if (const double d = depth_at(body, a, b, static_cast<double>(k) / kSamples); d > depth) depth = d, best = k;
+    if (const double d = depth(static_cast<double>(k) / kSamples); d > deepest) deepest = d, best = k;
   double lo = static_cast<double>(best - 1) / kSamples, hi = static_cast<double>(best + 1) / kSamples;
-  for (int step = 0; step < 40; ++step) {
-    const double left = lo + (hi - lo) / 3.0, right = hi - (hi - lo) / 3.0;
-    if (depth_at(body, a, b, left) < depth_at(body, a, b, right)) lo = left;
-    else hi = right;
+  double left = hi - kGoldenShare * (hi - lo), right = lo + kGoldenShare * (hi - lo);
+  double at_left = depth(left), at_right = depth(right);
+  while (hi - lo > kRefinedShare) {
+    if (at_left < at_right) {
+      lo = left, left = right, at_left = at_right;
+      right = lo + kGoldenShare * (hi - lo), at_right = depth(right);
+    } else {
+      hi = right, right = left, at_right = at_left;
+      left = hi - kGoldenShare * (hi - lo), at_left = depth(left);
+    }
   }
-  return std::max({depth, depth_at(body, a, b, 0.5 * (lo + hi)), 0.0});
+  return std::max({deepest, at_left, at_right, 0.0});
 }
 
 // How deep the straight segment a–b reaches into some body; 0 when it stays out.
-double deepest_into(const Model& model, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+double deepest_into(const Model& model, NearbyQueries& queries, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   double deepest = 0.0;
-  for (const RigidBody& body : model.bodies)
-    if (body.segment_crosses(a, b)) deepest = std::max(deepest, depth_inside(body, a, b));
+  for (std::size_t body = 0; body < model.bodies.size(); ++body)
+    if (model.bodies[body].segment_crosses(a, b))
+      deepest = std::max(deepest, depth_inside(queries, static_cast<int>(body), a, b));
   return deepest;
 }
 
@@ -49,15 +58,16 @@ struct SpringDepth {
   double depth_m = 0.0;  // how deep it (or a leg) reaches into a body
 };
 
-SpringDepth spring_depth(const Model& model, const Spring& spring, const std::vector<Eigen::Vector3d>& x) {
+SpringDepth spring_depth(const Model& model, NearbyQueries& queries, const Spring& spring,
+                         const std::vector<Eigen::Vector3d>& x) {
   if (spring.kind == SpringKind::bend) return {};  // spans two cells: its segment is no fabric
   const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
   const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
   if (!a.allFinite() || !b.allFinite()) return {};
   // A spring wrapped over an edge runs in two legs, each of which may cut another feature.
   const auto wrap = spring_wrap(model, spring, a, b);
-  if (!wrap) return {false, deepest_into(model, a, b)};
-  return {true, std::max(deepest_into(model, a, wrap->point), deepest_into(model, wrap->point, b))};
+  if (!wrap) return {false, deepest_into(model, queries, a, b)};
+  return {true, std::max(deepest_into(model, queries, a, wrap->point), deepest_into(model, queries, wrap->point, b))};
 }
 
 }  // namespace
@@ -66,9 +76,9 @@ SpringCuts find_spring_cuts(const Model& model, const std::vector<Eigen::Vector3
   const std::vector<Spring>& springs = model.fabric.springs();
   // Each spring measured on its own (in parallel), then counted in order.
   std::vector<SpringDepth> measured(springs.size());
-#pragma omp parallel for schedule(dynamic, 64) if (springs.size() >= kMinParallelItems)
-  for (int s = 0; s < static_cast<int>(springs.size()); ++s)
-    measured[static_cast<std::size_t>(s)] = spring_depth(model, springs[static_cast<std::size_t>(s)], x);
+  for_each_nearby(static_cast<int>(springs.size()), model.bodies, [&](int s, NearbyQueries& queries) {
+    measured[static_cast<std::size_t>(s)] = spring_depth(model, queries, springs[static_cast<std::size_t>(s)], x);
+  });
   SpringCuts cuts;
   for (std::size_t s = 0; s < springs.size(); ++s) {
     cuts.over_edges += measured[s].wrapped ? 1 : 0;

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 
+#include "fabform/geometry/nearby_queries.hpp"
 #include "fabform/io/mesh_reader.hpp"
 #include "fabform/material/material_csv.hpp"
 #include "fabform/model/clamp_frame.hpp"
@@ -200,16 +202,31 @@ int first_failing(int count, const Fails& fails) {
   return first == failed.end() ? -1 : static_cast<int>(first - failed.begin());
 }
 
+// How deep each node starts inside body `body`: 0 on its surface, negative outside it (−∞
+// where that is known without asking how far).
+std::vector<double> start_depths(const Model& model, int body) {
+  std::vector<double> depth(model.start.size());
+  for_each_nearby(model.node_count(), model.bodies, [&](int k, NearbyQueries& queries) {
+    const auto i = static_cast<std::size_t>(k);
+    depth[i] = queries.surely_outside(body, model.start[i], 0.0)
+                   ? -std::numeric_limits<double>::infinity()
+                   : -queries.closest(body, model.start[i]).signed_distance;
+  });
+  return depth;
+}
+
 // Seed 003 starts from a deformation with "no contact or intersection" with the body.
 void check_clear_start(const Scene& scene, const Model& model) {
   const auto at = [&](int k) -> const Eigen::Vector3d& { return model.start[static_cast<std::size_t>(k)]; };
   const std::vector<Spring>& springs = model.fabric.springs();
-  for (const RigidBody& body : model.bodies) {
-    const int inside = first_failing(model.node_count(), [&](int k) { return body.closest(at(k)).signed_distance <= 0.0; });
-    if (inside >= 0) {
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const RigidBody& body = model.bodies[b];
+    const std::vector<double> depths = start_depths(model, static_cast<int>(b));
+    const auto inside = std::find_if(depths.begin(), depths.end(), [](double d) { return d >= 0.0; });
+    if (inside != depths.end()) {
       char depth[64];
-      std::snprintf(depth, sizeof depth, "%.3g", -body.closest(at(inside)).signed_distance);
-      throw InputError(scene.initial_where, model.fabric.node_name(inside) + " starts inside body '" + body.name() +
+      std::snprintf(depth, sizeof depth, "%.3g", *inside);
+      throw InputError(scene.initial_where, model.fabric.node_name(static_cast<int>(inside - depths.begin())) + " starts inside body '" + body.name() +
                                                 "' (" + depth + " m deep)" + orientation_hint(body));
     }
     const int through = first_failing(static_cast<int>(springs.size()), [&](int s) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "fabform/geometry/nearby_queries.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/solver/solve.hpp"
 
@@ -110,6 +111,7 @@ std::vector<Eigen::Vector3d> interpolate_rest(const Fabric& coarse, const std::v
 
 SolverState continued_start(const Model& model, std::vector<Eigen::Vector3d> interpolated) {
   SolverState state = SolverState::at_start(model);
+  NearbyQueries queries(model.bodies);
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
     const AxisMask locks = model.locks[i];
@@ -117,7 +119,8 @@ SolverState continued_start(const Model& model, std::vector<Eigen::Vector3d> int
     for (int axis = 0; axis < 3; ++axis)
       if (locks & (1 << axis)) p[axis] = model.start[i][axis];
     for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-      const SurfacePoint s = model.bodies[b].closest(p);
+      if (queries.surely_outside(static_cast<int>(b), p, 0.0)) continue;
+      const SurfacePoint s = queries.closest(static_cast<int>(b), p);
       if (s.signed_distance > 0.0) continue;
       // A free node goes onto the surface, resting there as on the coarse grid; a held one
       // cannot be moved off its held axes, so it keeps the start the builder checked clear.

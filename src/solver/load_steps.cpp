@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "fabform/geometry/nearby_queries.hpp"
+
 namespace fabform {
 namespace {
 
@@ -31,12 +33,14 @@ void carry_resting_nodes(const Model& model, SolverState& state, int body, const
 // lands there (its anchor for friction).
 void put_overlapped_on_surface(const Model& model, SolverState& state) {
   const AxisMask all = kLockX | kLockY | kLockZ;
+  NearbyQueries queries(model.bodies);
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
     if (state.contact[i].active() || model.locks[i] == all) continue;
     for (std::size_t b = 0; b < model.paths.size(); ++b) {
       if (!model.paths[b].moves()) continue;
-      const SurfacePoint s = model.bodies[b].closest(state.x[i]);
+      if (queries.surely_outside(static_cast<int>(b), state.x[i], 0.0)) continue;
+      const SurfacePoint s = queries.closest(static_cast<int>(b), state.x[i]);
       if (s.signed_distance >= 0.0) continue;
       const Eigen::Vector3d on = keep_locked(s.point, state.x[i], model.locks[i]);
       state.x[i] = on;

@@ -17,6 +17,7 @@
 #include "fabform/geometry/closest_point.hpp"
 #include "fabform/geometry/placement.hpp"
 #include "fabform/io/mesh_reader.hpp"
+#include "support/shapes.hpp"
 #include "test_paths.hpp"
 
 namespace fabform {
@@ -228,6 +229,28 @@ class RigidBodyRealMeshes : public ::testing::Test {
     }
   }
 
+  static void check_hinted_closest_against_brute_force(const RigidBody& body, unsigned seed) {
+    // closest(p, t) answers as closest(p) whatever triangle t hints: none (-1), one past the
+    // last, a random one (often far), or the answer itself. Ties between triangles at the same
+    // distance may name either, with the same point, distance and side.
+    const double tol = 1e-9 + 1e-6 * body.box().diagonal();
+    const int triangles = static_cast<int>(body.mesh().triangles.size());
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> any_triangle(0, triangles - 1);
+    const std::vector<V> points = query_points(body, seed);
+    for (std::size_t k = 0; k < points.size(); k += 2) {
+      const V& p = points[k];
+      const Brute brute = brute_closest(body.mesh(), p);
+      const SurfacePoint plain = body.closest(p);
+      for (const int hint : {-1, triangles, any_triangle(rng), brute.triangle}) {
+        const SurfacePoint s = body.closest(p, hint);
+        EXPECT_NEAR(s.distance, brute.distance, tol) << "p " << p.transpose() << " hint " << hint;
+        EXPECT_NEAR(s.signed_distance, plain.signed_distance, tol) << "p " << p.transpose() << " hint " << hint;
+        EXPECT_LE((s.point - plain.point).norm(), tol) << "p " << p.transpose() << " hint " << hint;
+      }
+    }
+  }
+
   static RealMesh* featuretype_;
   static RealMesh* torso_;
 };
@@ -258,6 +281,14 @@ TEST_F(RigidBodyRealMeshes, FeaturetypeClosestWithinMatchesBruteForce) {
 
 TEST_F(RigidBodyRealMeshes, TorsoClosestWithinMatchesBruteForce) {
   check_closest_within_against_brute_force(*torso_->body, 222u);
+}
+
+TEST_F(RigidBodyRealMeshes, FeaturetypeHintedClosestMatchesBruteForce) {
+  check_hinted_closest_against_brute_force(*featuretype_->body, 121u);
+}
+
+TEST_F(RigidBodyRealMeshes, TorsoHintedClosestMatchesBruteForce) {
+  check_hinted_closest_against_brute_force(*torso_->body, 242u);
 }
 
 // A body moved along a tool path (turned and shifted) answers as its moved mesh: closest points
@@ -579,6 +610,29 @@ TEST(RigidBody, OpenPlateIsOutsideBeyondItsRim) {
   for (const V& beyond : {V(1.5, 0.5, -0.1), V(-0.5, 0.5, -0.3), V(2.0, 2.0, -1.0), V(0.5, 1.2, -0.05)})
     EXPECT_DOUBLE_EQ(body.closest(beyond).signed_distance, body.closest(beyond).distance)
         << beyond.transpose();
+}
+
+// Watertight: every edge joins two faces that run it opposite ways. A cube and a UV sphere are;
+// the open torso, a plate, a cube with a face missing, one turned over, or a third face on an
+// edge are not.
+TEST(RigidBody, WatertightOnlyWhenClosedAndConsistentlyOriented) {
+  EXPECT_TRUE(RigidBody("cube", test::cube()).watertight());
+  EXPECT_TRUE(RigidBody("sphere", test::uv_sphere(V::Zero(), 1.0, 12, 24)).watertight());
+  TriangleMesh torn = test::cube();
+  torn.triangles.pop_back();
+  EXPECT_FALSE(RigidBody("torn", torn).watertight());
+  TriangleMesh turned = test::cube();
+  test::flip(&turned.triangles[3]);
+  EXPECT_FALSE(RigidBody("turned", turned).watertight());
+  TriangleMesh finned = test::cube();
+  finned.vertices.push_back(V(0.5, -1.0, 0.0));
+  finned.triangles.push_back({0, 1, 8});  // a fin on the edge 0–1, which two faces already join
+  EXPECT_FALSE(RigidBody("finned", finned).watertight());
+  TriangleMesh plate;
+  plate.vertices = {V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0, 1, 0)};
+  plate.triangles = {{0, 1, 2}, {0, 2, 3}};
+  EXPECT_FALSE(RigidBody("plate", plate).watertight());
+  EXPECT_FALSE(RigidBody("torso_open", read_mesh(test::source_path("molds/garmentcode_mean_female_torso_open.obj"))).watertight());
 }
 
 TEST(RigidBody, InvalidMeshesThrow) {

@@ -40,6 +40,9 @@ class RigidBody {
 
   /// Closest surface point to p (BVH candidates, exact double distances).
   SurfacePoint closest(const Eigen::Vector3d& p) const;
+  /// The same, searched within p's distance to triangle `near_triangle` (say, a neighbouring
+  /// point's closest), which bounds it: cheap when that triangle is near. -1: no such triangle.
+  SurfacePoint closest(const Eigen::Vector3d& p, int near_triangle) const;
   /// The same, when the surface lies within `radius` of p; a small radius makes it cheap.
   std::optional<SurfacePoint> closest_within(const Eigen::Vector3d& p, double radius) const;
 
@@ -79,6 +82,10 @@ class RigidBody {
   const TriangleMesh& mesh() const { return mesh_; }
   /// The placed mesh's bounding box (its size holds wherever the body travels).
   const BoundingBox& box() const { return box_; }
+  /// Whether every edge joins exactly two faces that run it in opposite directions: a closed,
+  /// consistently oriented surface, whose signed distance then changes no faster than the
+  /// point moves (it is zero only on the surface).
+  bool watertight() const { return watertight_; }
   /// Volume enclosed, positive when the faces are oriented outward (meaningful when closed).
   double signed_volume() const;
   /// Outward unit normal of a triangle (zero for a degenerate one).
@@ -108,6 +115,7 @@ class RigidBody {
   std::vector<Eigen::Vector3d> vertex_normals_;
   std::vector<std::array<bool, 3>> edge_on_rim_;  // per triangle: edge used by this face only
   std::vector<unsigned char> vertex_on_rim_;
+  bool watertight_ = true;
   std::vector<SharpEdge> sharp_edges_;              // in the placed frame
   std::vector<std::array<int, 3>> sharp_edge_at_;   // per triangle: 01, 12, 20's index there, or -1
   double wrap_angle_deg_ = 0.0;

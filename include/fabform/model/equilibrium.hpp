@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "fabform/geometry/nearby_queries.hpp"
 #include "fabform/model/model.hpp"
 #include "fabform/model/spring_cuts.hpp"
 
@@ -31,7 +32,8 @@ struct NearestSurface {
   SurfacePoint point;
   int body = -1;
 };
-NearestSurface nearest_surface(const Model& model, const Eigen::Vector3d& p);
+/// `queries` serves the model's bodies, and is cheapest asked about neighbouring points in turn.
+NearestSurface nearest_surface(const Model& model, NearbyQueries& queries, const Eigen::Vector3d& p);
 
 struct EquilibriumReport {
   std::vector<double> residual_N;      // V_k per node
