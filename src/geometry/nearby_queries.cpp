@@ -1,6 +1,7 @@
 #include "fabform/geometry/nearby_queries.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "fabform/thread_count.hpp"
 
@@ -22,10 +23,11 @@ SurfacePoint NearbyQueries::closest(int body, const Eigen::Vector3d& p) {
   return s;
 }
 
-bool NearbyQueries::surely_outside(int body, const Eigen::Vector3d& p, double clearance) const {
+double NearbyQueries::clearance_bound(int body, const Eigen::Vector3d& p) const {
   const Answer& last = last_[static_cast<std::size_t>(body)];
-  return last.triangle >= 0 && (*bodies_)[static_cast<std::size_t>(body)].watertight() &&
-         last.signed_distance - (p - last.at).norm() > clearance;
+  const double bound = last.signed_distance - (p - last.at).norm();
+  const bool proves = last.triangle >= 0 && (*bodies_)[static_cast<std::size_t>(body)].watertight() && bound > 0.0;
+  return proves ? bound : -std::numeric_limits<double>::infinity();
 }
 
 void for_each_nearby(int count, const std::vector<RigidBody>& bodies,

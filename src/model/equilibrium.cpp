@@ -60,16 +60,32 @@ Grip grip(const Eigen::Vector3d& r, AxisMask locks, const Eigen::Vector3d& norma
 // parallel and summed in their order.
 struct NodeCheck {
   double penetration_m = -std::numeric_limits<double>::infinity();  // none without a body
+  bool penetration_bounded = false;  // penetration_m is only an upper bound
   double residual_N = 0.0;
   bool touching = false;
   Grip grip = Grip::none;
 };
 
+// How far outside every body p lies at least, as `queries` prove without asking (−∞ where they
+// do not prove it for some body, or there is none).
+double least_clearance(const Model& model, const NearbyQueries& queries, const Eigen::Vector3d& p) {
+  double least = model.bodies.empty() ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) least = std::min(least, queries.clearance_bound(static_cast<int>(b), p));
+  return least;
+}
+
 NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, int node, NearbyQueries& queries,
                      double contact_tolerance_m, double tolerance_N) {
   const auto k = static_cast<std::size_t>(node);
   NodeCheck c;
-  const NearestSurface nearest = nearest_surface(model, queries, x[k]);
+  NearestSurface nearest;
+  // A node proved clear of every body touches none, and is no deeper in one than the bound says.
+  if (const double clear = least_clearance(model, queries, x[k]); clear > contact_tolerance_m) {
+    c.penetration_m = -clear;
+    c.penetration_bounded = true;
+  } else {
+    nearest = nearest_surface(model, queries, x[k]);
+  }
   c.touching = nearest.body >= 0 && nearest.point.distance <= contact_tolerance_m;
   if (nearest.body >= 0) c.penetration_m = -nearest.point.signed_distance;
   const Eigen::Vector3d r = node_force(model, x, node);
@@ -77,6 +93,25 @@ NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, 
   c.residual_N = unbalanced_force(r, model.locks[k], c.touching ? &nearest.point.normal : nullptr, friction).norm();
   if (c.touching) c.grip = grip(r, model.locks[k], nearest.point.normal, friction, tolerance_N);
   return c;
+}
+
+// The deepest penetration of any node: the measured ones', and a bounded node's measured where
+// its bound could exceed that (deepest bound first, so most are settled by the bound).
+double deepest_penetration(const Model& model, const std::vector<Eigen::Vector3d>& x, const std::vector<NodeCheck>& checks) {
+  double deepest = -std::numeric_limits<double>::infinity();
+  std::vector<int> bounded;
+  for (std::size_t k = 0; k < checks.size(); ++k) {
+    if (checks[k].penetration_bounded) bounded.push_back(static_cast<int>(k));
+    else deepest = std::max(deepest, checks[k].penetration_m);
+  }
+  const auto bound = [&](int k) { return checks[static_cast<std::size_t>(k)].penetration_m; };
+  std::sort(bounded.begin(), bounded.end(), [&](int a, int b) { return bound(a) > bound(b); });
+  NearbyQueries queries(model.bodies);
+  for (const int k : bounded) {
+    if (bound(k) <= deepest) break;
+    deepest = std::max(deepest, -nearest_surface(model, queries, x[static_cast<std::size_t>(k)]).point.signed_distance);
+  }
+  return deepest;
 }
 
 }  // namespace
@@ -98,9 +133,9 @@ EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eige
   for_each_nearby(model.node_count(), model.bodies, [&](int k, NearbyQueries& queries) {
     checks[static_cast<std::size_t>(k)] = check_node(model, x, k, queries, contact_tolerance_m, tolerance_N);
   });
+  report.max_penetration_m = deepest_penetration(model, x, checks);
   for (std::size_t k = 0; k < n; ++k) {
     const NodeCheck& c = checks[k];
-    report.max_penetration_m = std::max(report.max_penetration_m, c.penetration_m);
     report.residual_N[k] = c.residual_N;
     report.contact[k] = c.touching ? 1 : 0;
     report.contact_nodes += c.touching ? 1 : 0;

@@ -20,10 +20,14 @@ class NearbyQueries {
   explicit NearbyQueries(const std::vector<RigidBody>& bodies);
   /// Body `body`'s closest surface point to p.
   SurfacePoint closest(int body, const Eigen::Vector3d& p);
-  /// Whether p lies outside body `body` by more than `clearance`, as the last answer about the
-  /// body proves without a query: at q, outside by s, so by more than s − |p − q| at p (for a
-  /// watertight body only). False says nothing: ask closest().
-  bool surely_outside(int body, const Eigen::Vector3d& p, double clearance) const;
+  /// How far outside body `body` p lies at least, as the last answer about the body proves
+  /// without a query: at q, outside by s, so by s − |p − q| or more at p (for a watertight body
+  /// only); −∞ when it proves nothing.
+  double clearance_bound(int body, const Eigen::Vector3d& p) const;
+  /// Whether clearance_bound() exceeds `clearance`. False says nothing: ask closest().
+  bool surely_outside(int body, const Eigen::Vector3d& p, double clearance) const {
+    return clearance_bound(body, p) > clearance;
+  }
 
  private:
   struct Answer {
