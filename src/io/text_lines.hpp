@@ -2,8 +2,8 @@
 // Text mesh files (OBJ, OFF, PLY headers, ASCII STL) line by line, as words. Internal to the
 // mesh reader: the file check and the OBJ reader walk text the same way.
 #include <cstddef>
-#include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fabform {
@@ -26,14 +26,16 @@ class TextLines {
     while (at_ < text_.size()) {
       std::size_t end = text_.find('\n', at_);
       if (end == std::string::npos) end = text_.size();
-      std::string content = text_.substr(at_, end - at_);
+      std::string_view content(text_.data() + at_, end - at_);
       at_ = end + 1;
       ++number_;
       if (hash_comments_) content = content.substr(0, content.find('#'));
-      if (!continued_) *line = Line{number_, {}};
+      if (!continued_) {
+        line->number = number_;
+        line->words.clear();
+      }
       continued_ = hash_comments_ && ends_with_backslash(&content);
-      std::istringstream in(content);
-      for (std::string word; in >> word;) line->words.push_back(word);
+      add_words(content, &line->words);
       if (!continued_ && !line->words.empty()) return true;
     }
     return false;
@@ -43,11 +45,26 @@ class TextLines {
 
  private:
   // OBJ's "\\" at the end of a line continues the record on the next line; removes it.
-  static bool ends_with_backslash(std::string* content) {
+  static bool ends_with_backslash(std::string_view* content) {
     const std::size_t last = content->find_last_not_of(" \t\r");
-    if (last == std::string::npos || (*content)[last] != '\\') return false;
-    content->erase(last);
+    if (last == std::string_view::npos || (*content)[last] != '\\') return false;
+    *content = content->substr(0, last);
     return true;
+  }
+
+  // The words of a line as `>>` reads them in the C locale, without a stream per line (which
+  // cost more than the rest of reading a large mesh).
+  static void add_words(std::string_view content, std::vector<std::string>* words) {
+    const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f' || c == '\n'; };
+    std::size_t at = 0;
+    while (true) {
+      while (at < content.size() && space(content[at])) ++at;
+      if (at == content.size()) return;
+      std::size_t end = at;
+      while (end < content.size() && !space(content[end])) ++end;
+      words->emplace_back(content.substr(at, end - at));
+      at = end;
+    }
   }
 
   const std::string& text_;
