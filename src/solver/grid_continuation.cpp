@@ -146,6 +146,7 @@ Continuation continue_from_coarse_grids(const Scene& scene, const Model& model) 
     level_scene.fabric.divisions_warp = divisions[0];
     level_scene.fabric.divisions_weft = divisions[1];
     level_scene.solver.continuation_levels = 0;
+    level_scene.solver.newton.final_estimate = false;
     const Model level = build_model(level_scene, &model);  // the mold read once, not per grid
     SolverState state = coarse ? continued_start(level, interpolate_rest(*coarse, coarse_rest, level.fabric))
                                : SolverState::at_start(level);

@@ -291,12 +291,13 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
   };
   steps.measure = [&] { return measure_state(model, state); };
   // One more factorisation (or tight solve), of the final state, without moving it.
-  steps.final_position_error = [&](const Summary& summary) {
-    const double size = step.next_step_size();
-    if (step.steps_were_loose()) return inexact_newton_position_error(size, summary.history);
-    step_sizes.push_back(size);
-    return newton_position_error(step_sizes);
-  };
+  if (options.final_estimate)
+    steps.final_position_error = [&](const Summary& summary) {
+      const double size = step.next_step_size();
+      if (step.steps_were_loose()) return inexact_newton_position_error(size, summary.history);
+      step_sizes.push_back(size);
+      return newton_position_error(step_sizes);
+    };
   steps.stall_message = stall_message;
   Summary summary = run_solver_loop("newton", stop_settings(options), steps, observer, std::move(resumed), started);
   record_linear_solver(summary, step);

@@ -35,6 +35,9 @@ struct NewtonOptions {
   // preconditioned by algebraic multigrid, to an inexact Newton tolerance), or "auto": the
   // factorisation below the size where multigrid is the faster (linalg/linear_solver.hpp).
   std::string linear_solver = "auto";
+  // Whether the run ends with the estimate of its distance from the rest (one more solve);
+  // a continuation's coarser grid, whose rest is only a start, goes without.
+  bool final_estimate = true;
 
   /// Why the options cannot be used, or "" when they can; `field` gets the option's name.
   std::string invalid_reason(std::string* field = nullptr) const;

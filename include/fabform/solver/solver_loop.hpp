@@ -29,7 +29,7 @@ struct SolverSteps {
   /// ‖V‖∞, its worst node and the contact of the current state.
   std::function<StateResidual()> measure;
   /// The estimate of the final state's distance from the rest (m; NaN: none), asked for when
-  /// final_position_error_due.
+  /// final_position_error_due; empty: none asked for.
   std::function<double(const Summary&)> final_position_error;
   /// The message for a run whose step stalled; a solver whose steps never stall leaves it empty.
   std::function<std::string(const Summary&)> stall_message;
