@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -72,7 +74,10 @@ TEST(GridContinuation, ContinuedDomeReachesANeighbouringRestInFewerIterations) {
   const Model model = build_model(scene);
   const Continuation continued = continue_from_coarse_grids(scene, model);
   ASSERT_EQ(continued.levels.size(), 2u);
-  for (const ContinuationLevel& level : continued.levels) EXPECT_TRUE(level.summary.converged()) << level.summary.message;
+  for (const ContinuationLevel& level : continued.levels) {
+    EXPECT_TRUE(level.summary.converged()) << level.summary.message;
+    EXPECT_TRUE(std::isnan(level.summary.position_error_m));  // a start, not an answer: no estimate
+  }
   const auto solve_from = [&](SolverState state, double tolerance_N, Summary* summary) {
     NewtonOptions options = scene.solver.newton;
     options.tolerance_N = tolerance_N;
