@@ -50,6 +50,8 @@ constexpr double kMaxRegularization = 1e8;
 // The range of an inexact Newton step's relative tolerance η (NewtonStep::forcing).
 constexpr double kMaxForcing = 0.1;
 constexpr double kMinForcing = 1e-8;
+// A step that left ‖f‖ above this share of the last one's stagnated (see forcing()).
+constexpr double kStagnantRatio = 0.9;
 // A step that measures the distance from the rest (position_error.hpp) is solved at least this
 // tightly: every step of a run that stops in metres, and the final estimate's.
 constexpr double kMeasuringForcing = 1e-4;
@@ -166,6 +168,9 @@ class NewtonStep {
       const double safeguard = 0.9 * forcing_ * forcing_;
       if (safeguard > 0.1) eta = std::max(eta, safeguard);
       eta = std::clamp(eta, kMinForcing, kMaxForcing);
+      // A step that barely cut ‖f‖ asks for η near 0.9, held at the cap: loose steps that
+      // barely move the state would go on so to the iteration cap. It gets a tenth of its η.
+      if (ratio > kStagnantRatio) eta = std::max(forcing_ / 10.0, kMinForcing);
     }
     last_force_norm_ = force_norm;
     forcing_ = eta;
