@@ -50,7 +50,7 @@ constexpr double kMaxRegularization = 1e8;
 // The range of an inexact Newton step's relative tolerance η (NewtonStep::forcing).
 constexpr double kMaxForcing = 0.1;
 constexpr double kMinForcing = 1e-8;
-// A step that left ‖f‖ above this share of the last one's stagnated (see forcing()).
+// A step that left ‖f‖ above this share of the last one's stagnated (NewtonStep::forcing).
 constexpr double kStagnantRatio = 0.9;
 // A step that measures the distance from the rest (position_error.hpp) is solved at least this
 // tightly: every step of a run that stops in metres, and the final estimate's.
@@ -169,8 +169,10 @@ class NewtonStep {
       if (safeguard > 0.1) eta = std::max(eta, safeguard);
       eta = std::clamp(eta, kMinForcing, kMaxForcing);
       // A step that barely cut ‖f‖ asks for η near 0.9, held at the cap: loose steps that
-      // barely move the state would go on so to the iteration cap. It gets a tenth of its η.
-      if (ratio > kStagnantRatio) eta = std::max(forcing_ / 10.0, kMinForcing);
+      // barely move the state would go on so to the iteration cap. The second such step in a
+      // row gets a tenth of the last η (one alone is common, and tightening then costs more).
+      stagnant_steps_ = ratio > kStagnantRatio ? stagnant_steps_ + 1 : 0;
+      if (stagnant_steps_ >= 2) eta = std::max(forcing_ / 10.0, kMinForcing);
     }
     last_force_norm_ = force_norm;
     forcing_ = eta;
@@ -246,6 +248,7 @@ class NewtonStep {
   std::unique_ptr<LinearSolver> linear_;  // chosen at the first step, by its unknowns
   double last_force_norm_ = 0.0;  // ‖f‖₂ of the last step proposed (0: none yet)
   double forcing_ = kMaxForcing;  // its η
+  int stagnant_steps_ = 0;  // steps in a row whose ‖f‖ stayed above kStagnantRatio of the last
   bool loose_ = false;  // see steps_were_loose
 };
 

@@ -117,8 +117,8 @@ TEST(Newton, MultigridStepsReachTheCholeskyRest) {
 }
 
 // On the dome at 61 × 61 nodes, loose multigrid steps once cut ‖f‖ by well under 1 % each,
-// and η stayed at its cap: the run crept to its 200-iteration cap at 1.8e-4 N. A stagnating step
-// now tightens the next (NewtonStep::forcing), and the run converges.
+// and η stayed at its cap: the run crept to its 200-iteration cap at 1.8e-4 N. Two stagnating
+// steps in a row now tighten the next (NewtonStep::forcing), and the run converges.
 TEST(Newton, MultigridStepsThatStagnateAreSolvedTighter) {
   const Scene scene = load_scene(test::source_path("scenes/dome.toml"), {{"fabric.divisions", "[60,60]"}});
   const Model model = build_model(scene);
