@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fabform/model/spring_path.hpp"
 #include "fabform/geometry/nearby_queries.hpp"
+#include "fabform/model/spring_path.hpp"
 
 namespace fabform {
 namespace {

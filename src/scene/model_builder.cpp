@@ -226,8 +226,9 @@ void check_clear_start(const Scene& scene, const Model& model) {
     if (inside != depths.end()) {
       char depth[64];
       std::snprintf(depth, sizeof depth, "%.3g", *inside);
-      throw InputError(scene.initial_where, model.fabric.node_name(static_cast<int>(inside - depths.begin())) + " starts inside body '" + body.name() +
-                                                "' (" + depth + " m deep)" + orientation_hint(body));
+      const std::string node = model.fabric.node_name(static_cast<int>(inside - depths.begin()));
+      throw InputError(scene.initial_where, node + " starts inside body '" + body.name() + "' (" + depth + " m deep)" +
+                                                orientation_hint(body));
     }
     const int through = first_failing(static_cast<int>(springs.size()), [&](int s) {
       const Spring& spring = springs[static_cast<std::size_t>(s)];

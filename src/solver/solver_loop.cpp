@@ -31,7 +31,8 @@ Summary run_solver_loop(const std::string& solver, const StopSettings& stop, con
     const IterationRecord record{iteration, m.max_residual_N, elapsed(), m.contact_nodes};
     if (record_iteration(summary, record, m.worst_node, stop.max_iterations, observer)) break;
   }
-  if (steps.final_position_error && final_position_error_due(summary)) summary.position_error_m = steps.final_position_error(summary);
+  if (steps.final_position_error && final_position_error_due(summary))
+    summary.position_error_m = steps.final_position_error(summary);
   summary.seconds = elapsed();  // the final estimate included (newton's is one more factorisation)
   summary.message = stop_message(summary);
   return summary;

@@ -632,7 +632,8 @@ TEST(RigidBody, WatertightOnlyWhenClosedAndConsistentlyOriented) {
   plate.vertices = {V(0, 0, 0), V(1, 0, 0), V(1, 1, 0), V(0, 1, 0)};
   plate.triangles = {{0, 1, 2}, {0, 2, 3}};
   EXPECT_FALSE(RigidBody("plate", plate).watertight());
-  EXPECT_FALSE(RigidBody("torso_open", read_mesh(test::source_path("molds/garmentcode_mean_female_torso_open.obj"))).watertight());
+  const TriangleMesh torso = read_mesh(test::source_path("molds/garmentcode_mean_female_torso_open.obj"));
+  EXPECT_FALSE(RigidBody("torso_open", torso).watertight());
 }
 
 TEST(RigidBody, InvalidMeshesThrow) {
