@@ -182,6 +182,11 @@ int run(const RunArguments& args) {
   const std::string dir = output_dir(args, scene);
   check_results_folder(dir);
   const RunInputs inputs = describe_inputs(scene, start.overrides);
+  // Found once, as they do not change, and before any solve: a body refused for contact ends
+  // the run before the coarser grids are solved.
+  std::vector<std::string> of_model = body_warnings(scene, model);
+  for (const auto& term : model.terms)
+    if (std::string w = term->tolerance_warning(scene.solver.tolerance_N()); !w.empty()) of_model.push_back(std::move(w));
   SolverState state = SolverState::at_start(model);
   Summary so_far;
   std::vector<StepResult> finished_steps;
@@ -205,9 +210,6 @@ int run(const RunArguments& args) {
                scene.name.c_str(), model.node_count(), model.bodies.size(),
                scene.solver.name.c_str(), scene.solver.tolerance_N(),
                start.recorded ? (", resumed after iteration " + std::to_string(so_far.iterations)).c_str() : "");
-  std::vector<std::string> of_model = body_warnings(scene, model);  // found once: they do not change
-  for (const auto& term : model.terms)
-    if (std::string w = term->tolerance_warning(scene.solver.tolerance_N()); !w.empty()) of_model.push_back(std::move(w));
   const auto publish = [&](const SolverState& s, const Summary& summary) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m, scene.solver.tolerance_N());
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -110,6 +110,21 @@ TEST_F(RunCommand, BodyWithAFlippedTriangleIsRefusedAsCheckRefusesIt) {
   EXPECT_EQ(check.err, "fabform: error: sphere.obj" + refusal.substr(refusal.find(": inconsistent")));
 }
 
+// The refusal comes before any solve: with a coarser grid to solve first, that grid is not
+// solved (it could take long on a large fabric), and the error is the only line.
+TEST_F(RunCommand, BodyIsRefusedBeforeTheCoarserGridsAreSolved) {
+  TriangleMesh sphere = test::uv_sphere({0.05, 0.05, -0.02}, 0.03, 20, 40);
+  test::flip(&sphere.triangles.back());
+  dir.write("sphere.obj", obj_text(sphere));
+  const Outcome run = run_fabform(dir, "run scene.toml --out out --solver newton --set fabric.divisions=[40,40] "
+                                       "--set solver.continuation_levels=1");
+  EXPECT_EQ(run.status, 2) << run.err;
+  EXPECT_EQ(run.err.find("continuation grid"), std::string::npos) << run.err;
+  EXPECT_EQ(line_count(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("sphere.obj: inconsistent orientation"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("out")));
+}
+
 // Bad input: exit status 2, one line naming the file (and line), nothing written.
 struct BadRun {
   const char* name;
