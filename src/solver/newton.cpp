@@ -120,7 +120,7 @@ class NewtonStep {
     const FreeDirections directions = free_directions(model_, state_.contact);
     if (directions.used == 0) return std::nullopt;
     const Eigen::VectorXd f = reduced_forces(directions, p.forces);
-    const auto step = solve(reduced_hessian(model_, state_.x, directions, p.friction.empty() ? nullptr : &p.friction),
+    const auto step = solve(hessian_.assemble(model_, state_.x, directions, p.friction.empty() ? nullptr : &p.friction),
                             f, directions, std::min(forcing(f.norm()), loosest));
     if (!step) return std::nullopt;
     p.steps = node_steps(directions, *step);
@@ -246,6 +246,7 @@ class NewtonStep {
   double mu_;  // current regularisation, relative to the mean diagonal
   LinearMethod linear_method_;
   std::unique_ptr<LinearSolver> linear_;  // chosen at the first step, by its unknowns
+  ReducedHessian hessian_;  // keeps the matrix's pattern from step to step
   double last_force_norm_ = 0.0;  // ‖f‖₂ of the last step proposed (0: none yet)
   double forcing_ = kMaxForcing;  // its η
   int stagnant_steps_ = 0;  // steps in a row whose ‖f‖ stayed above kStagnantRatio of the last

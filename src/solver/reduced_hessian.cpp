@@ -1,52 +1,123 @@
 #include "solver/reduced_hessian.hpp"
 
+#include <algorithm>
 #include <cstddef>
+#include <utility>
 
 namespace fabform {
 namespace {
 
-using Triplets = std::vector<Eigen::Triplet<double>>;
+std::size_t at(int index) { return static_cast<std::size_t>(index); }
 
-// Gathers the terms' blocks into the lower triangle of the reduced matrix.
-class ReducedAssembly final : public StiffnessSink {
+// Sums each block the terms hand, in the free directions, into its pair, the lower one (a pair's
+// transpose is the other), in the order handed (so the sums are those of a list of entries
+// summed in that order); notes the pairs there is no block for.
+class PairSums final : public StiffnessSink {
  public:
-  ReducedAssembly(const FreeDirections& directions, Triplets* out) : d_(directions), out_(out) {}
+  PairSums(const FreeDirections& directions, const std::vector<int>& start, const std::vector<int>& row,
+           std::vector<Eigen::Matrix3d>* block)
+      : d_(directions), start_(start), row_(row), block_(block) {}
 
   void add(int row, int col, const Eigen::Matrix3d& stiffness) override {
-    if (row == col || offset(row) > offset(col)) add_block(row, col, stiffness);
-    else add_block(col, row, stiffness.transpose());
+    if (row >= col) sum(row, col, stiffness);
+    else sum(col, row, stiffness.transpose());
   }
+  std::vector<std::pair<int, int>>& missing() { return missing_; }
 
  private:
-  int offset(int node) const { return d_.offset[static_cast<std::size_t>(node)]; }
-
-  // Block (row node, column node) of the reduced matrix; on the diagonal only its lower half.
-  void add_block(int row, int col, const Eigen::Matrix3d& stiffness) {
-    const Eigen::Matrix3d block = d_.of(row).transpose() * stiffness * d_.of(col);
-    const int r0 = offset(row), c0 = offset(col);
-    for (int r = 0; r < d_.count(row); ++r)
-      for (int c = 0; c < d_.count(col); ++c)
-        if (r0 + r >= c0 + c) out_->emplace_back(r0 + r, c0 + c, block(r, c));
+  void sum(int i, int j, const Eigen::Matrix3d& stiffness) {
+    const auto first = row_.begin() + start_[at(j)], last = row_.begin() + start_[at(j) + 1];
+    const auto found = std::lower_bound(first, last, i);
+    if (found == last || *found != i) missing_.emplace_back(i, j);
+    else (*block_)[static_cast<std::size_t>(found - row_.begin())] += d_.of(i).transpose() * stiffness * d_.of(j);
   }
 
   const FreeDirections& d_;
-  Triplets* out_;
+  const std::vector<int>& start_;
+  const std::vector<int>& row_;
+  std::vector<Eigen::Matrix3d>* block_;
+  std::vector<std::pair<int, int>> missing_;
 };
 
 }  // namespace
 
-Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
-                                            const std::vector<Eigen::Vector3d>& x,
+bool ReducedHessian::sum_blocks(const Model& model, const std::vector<Eigen::Vector3d>& x,
+                                const FreeDirections& directions, const Term* lagged) {
+  std::fill(block_.begin(), block_.end(), Eigen::Matrix3d::Zero());
+  PairSums sums(directions, start_, row_, &block_);
+  for (const auto& term : model.terms) term->add_stiffness(model, x, sums);
+  if (lagged) lagged->add_stiffness(model, x, sums);
+  if (sums.missing().empty()) return true;
+  add_pairs(model.node_count(), std::move(sums.missing()));
+  return false;
+}
+
+// The pairs kept and `missing`, and every node's own (the diagonal is always stored).
+void ReducedHessian::add_pairs(int nodes, std::vector<std::pair<int, int>> missing) {
+  std::vector<std::pair<int, int>> pairs = std::move(missing);  // (column, row)
+  for (auto& [i, j] : pairs) std::swap(i, j);
+  for (int j = 0; j < nodes; ++j) {
+    pairs.emplace_back(j, j);
+    if (at(j) + 1 < start_.size())
+      for (int p = start_[at(j)]; p < start_[at(j) + 1]; ++p) pairs.emplace_back(j, row_[at(p)]);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  start_.assign(at(nodes) + 1, 0);
+  row_.clear();
+  for (const auto& [j, i] : pairs) {
+    ++start_[at(j) + 1];
+    row_.push_back(i);
+  }
+  for (std::size_t j = 0; j < at(nodes); ++j) start_[j + 1] += start_[j];
+  block_.assign(row_.size(), Eigen::Matrix3d::Zero());
+}
+
+// Column by column of unknowns: a column of node j holds, for each pair (i, j) in ascending i,
+// the rows of node i's slots (from the column's own on the diagonal).
+Eigen::SparseMatrix<double> ReducedHessian::written_out(const FreeDirections& d) const {
+  const int nodes = static_cast<int>(start_.size()) - 1;
+  int entries = 0;
+  for (int j = 0; j < nodes; ++j)
+    for (int p = start_[at(j)]; p < start_[at(j) + 1]; ++p) {
+      const int i = row_[at(p)];
+      entries += i == j ? d.count(j) * (d.count(j) + 1) / 2 : d.count(i) * d.count(j);
+    }
+  Eigen::SparseMatrix<double> m(d.unknowns(), d.unknowns());
+  m.resizeNonZeros(entries);
+  int* outer = m.outerIndexPtr();
+  int* inner = m.innerIndexPtr();
+  double* value = m.valuePtr();
+  int written = 0;
+  for (int j = 0; j < nodes; ++j)
+    for (int q = 0; q < d.count(j); ++q) {
+      outer[d.offset[at(j)] + q] = written;
+      for (int p = start_[at(j)]; p < start_[at(j) + 1]; ++p) {
+        const int i = row_[at(p)];
+        for (int r = i == j ? q : 0; r < d.count(i); ++r) {
+          inner[written] = d.offset[at(i)] + r;
+          value[written++] = block_[at(p)](r, q);
+        }
+      }
+    }
+  outer[d.unknowns()] = written;
+  return m;
+}
+
+Eigen::SparseMatrix<double> ReducedHessian::assemble(const Model& model, const std::vector<Eigen::Vector3d>& x,
+                                                     const FreeDirections& directions, const Term* lagged) {
+  if (start_.size() != at(model.node_count()) + 1) {  // a model of another size: start again
+    start_.assign(1, 0);
+    row_.clear();
+    add_pairs(model.node_count(), {});
+  }
+  if (!sum_blocks(model, x, directions, lagged)) sum_blocks(model, x, directions, lagged);  // with the pairs found
+  return written_out(directions);
+}
+
+Eigen::SparseMatrix<double> reduced_hessian(const Model& model, const std::vector<Eigen::Vector3d>& x,
                                             const FreeDirections& directions, const Term* lagged) {
-  Triplets triplets;
-  triplets.reserve(model.fabric.springs().size() * 21 + static_cast<std::size_t>(directions.unknowns()));
-  for (int u = 0; u < directions.unknowns(); ++u) triplets.emplace_back(u, u, 0.0);
-  ReducedAssembly assembly(directions, &triplets);
-  for (const auto& term : model.terms) term->add_stiffness(model, x, assembly);
-  if (lagged) lagged->add_stiffness(model, x, assembly);
-  Eigen::SparseMatrix<double> hessian(directions.unknowns(), directions.unknowns());
-  hessian.setFromTriplets(triplets.begin(), triplets.end());
-  return hessian;
+  return ReducedHessian().assemble(model, x, directions, lagged);
 }
 
 }  // namespace fabform

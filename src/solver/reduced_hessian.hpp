@@ -11,9 +11,30 @@
 
 namespace fabform {
 
-/// Lower triangle only (what Eigen's SimplicialLDLT reads); every diagonal entry is stored,
-/// so a regularisation can be added to it in place. `lagged` is a term Newton holds for one
-/// iteration (friction), added to the model's own.
+/// Assembles Newton's matrix, lower triangle only (what the factorisations read), every diagonal
+/// entry stored so that a regularisation can be added to it in place. The terms' 3 × 3 blocks,
+/// in the free directions, are summed per pair of nodes into the pairs the last assembly found,
+/// then written out column by column: no list of entries to sort. The pairs are found again, in a second pass of the
+/// terms, only when a term couples two nodes they lack (the first time), and are never dropped,
+/// so the matrix's pattern stays the same from one Newton step to the next.
+class ReducedHessian {
+ public:
+  /// `lagged` is a term Newton holds for one iteration (friction), added to the model's own.
+  Eigen::SparseMatrix<double> assemble(const Model& model, const std::vector<Eigen::Vector3d>& x,
+                                       const FreeDirections& directions, const Term* lagged = nullptr);
+
+ private:
+  bool sum_blocks(const Model& model, const std::vector<Eigen::Vector3d>& x, const FreeDirections& directions,
+                  const Term* lagged);
+  void add_pairs(int nodes, std::vector<std::pair<int, int>> missing);
+  Eigen::SparseMatrix<double> written_out(const FreeDirections& directions) const;
+
+  std::vector<int> start_{0};          // per column node j, its first pair; one more at the end
+  std::vector<int> row_;               // per pair (i, j), i ≥ j: i, ascending within a column
+  std::vector<Eigen::Matrix3d> block_;  // per pair: the terms' blocks (row i, column j), summed
+};
+
+/// One assembly, with no pairs kept.
 Eigen::SparseMatrix<double> reduced_hessian(const Model& model,
                                             const std::vector<Eigen::Vector3d>& x,
                                             const FreeDirections& directions,

@@ -1,6 +1,7 @@
 // Newton's matrix against central differences of the node forces, on a taut fabric (every
 // spring stretched, so projecting a spring's stiffness changes nothing) with hinges bent out of
-// its plane: springs and hinges together, in the free directions of the unlocked nodes.
+// its plane: springs and hinges together, in the free directions of the unlocked nodes; and an
+// assembler kept from step to step against a fresh one.
 #include "solver/reduced_hessian.hpp"
 
 #include <gtest/gtest.h>
@@ -63,6 +64,47 @@ TEST(ReducedHessian, HingesAddTheirStiffness) {
   model.terms.pop_back();
   const Eigen::MatrixXd without(reduced_hessian(model, model.start, d));
   EXPECT_GT((with - without).cwiseAbs().maxCoeff(), 1e-3 * without.cwiseAbs().maxCoeff());
+}
+
+// Newton keeps one assembler from step to step. Kept over new positions, nodes pressed on a body
+// (a slot emptied), a term that couples pairs the earlier assemblies lacked (found in a second
+// pass of the terms) and a model of another size, it gives what a fresh one gives, entry for
+// entry, and a pattern that only grows.
+TEST(ReducedHessian, AKeptAssemblerGivesWhatAFreshOneGives) {
+  Model hinged = bent_hinged_fabric();
+  Model springs_only = bent_hinged_fabric();  // the same fabric and positions
+  springs_only.terms.pop_back();
+  std::vector<NodeContact> pressed(hinged.start.size());
+  for (int k = 0; k < hinged.node_count(); k += 4)
+    pressed[static_cast<std::size_t>(k)] = NodeContact{0, Eigen::Vector3d(0.3, -0.2, 1.0).normalized()};
+  std::vector<Eigen::Vector3d> moved = hinged.start;
+  for (Eigen::Vector3d& p : moved) p.z() += 0.3 * p.x() * p.y();
+  const Model other_size = test::clamped_fabric(6, 0.05);
+  struct Case {
+    const char* what;
+    const Model* model;
+    const std::vector<Eigen::Vector3d>* x;
+    std::vector<NodeContact> contact;
+  };
+  const std::vector<Case> cases{
+      {"springs", &springs_only, &springs_only.start, std::vector<NodeContact>(hinged.start.size())},
+      {"hinges too", &hinged, &hinged.start, std::vector<NodeContact>(hinged.start.size())},
+      {"moved", &hinged, &moved, std::vector<NodeContact>(hinged.start.size())},
+      {"pressed", &hinged, &moved, pressed},
+      {"springs again", &springs_only, &moved, pressed},
+      {"another size", &other_size, &other_size.start, std::vector<NodeContact>(other_size.start.size())}};
+  ReducedHessian kept;
+  Eigen::Index last_entries = 0;
+  for (const Case& c : cases) {
+    const FreeDirections d = free_directions(*c.model, c.contact);
+    const Eigen::SparseMatrix<double> again = kept.assemble(*c.model, *c.x, d);
+    const Eigen::SparseMatrix<double> fresh = reduced_hessian(*c.model, *c.x, d);
+    EXPECT_EQ(Eigen::MatrixXd(again), Eigen::MatrixXd(fresh)) << c.what;
+    if (c.model != &other_size) {
+      EXPECT_GE(again.nonZeros(), last_entries) << c.what;
+    }
+    last_entries = again.nonZeros();
+  }
 }
 
 }  // namespace
