@@ -35,8 +35,8 @@ namespace {
 
 class CholeskySolver final : public LinearSolver {
  public:
-  bool set_matrix(Eigen::SparseMatrix<double> lower, const std::vector<int>&) override {
-    return factor_.factorize(std::move(lower));
+  bool set_matrix(const Eigen::SparseMatrix<double>& lower, const std::vector<int>&) override {
+    return factor_.factorize(lower);
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b, double) override { return factor_.solve(b); }
   LinearMethod method() const override { return LinearMethod::cholesky; }
@@ -54,7 +54,7 @@ constexpr int kMaxCgIterations = 500;
 // the finest matrix from its argument), its stale smoother made the preconditioner indefinite.
 class MultigridSolver final : public LinearSolver {
  public:
-  bool set_matrix(Eigen::SparseMatrix<double> lower, const std::vector<int>& component) override {
+  bool set_matrix(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& component) override {
     cg_.set_matrix(lower, component);
     return true;
   }

@@ -32,7 +32,7 @@ class LinearSolver {
   /// Takes a symmetric matrix by its lower triangle, every diagonal entry stored; `component`
   /// gives each unknown's place in its node's displacement (0, 1, 2). False when the matrix is
   /// found not to be positive definite.
-  virtual bool set_matrix(Eigen::SparseMatrix<double> lower, const std::vector<int>& component) = 0;
+  virtual bool set_matrix(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& component) = 0;
   /// x with A x = b: exactly, or with ‖b − A x‖₂ ≤ relative_tolerance · ‖b‖₂ for an iterative
   /// method, whose every iterate is a descent direction for ½x'Ax − b'x.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b, double relative_tolerance) = 0;

@@ -1,6 +1,7 @@
 #include "linalg/sparse_cholesky.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -63,8 +64,11 @@ SparseCholesky::SparseCholesky(int min_split_unknowns) : impl_(std::make_unique<
 SparseCholesky::SparseCholesky() : SparseCholesky(SubstructuredCholesky::kMinUnknowns) {}
 SparseCholesky::~SparseCholesky() = default;
 
-bool SparseCholesky::factorize(Eigen::SparseMatrix<double> lower) {
-  lower.makeCompressed();  // the pattern comparison reads compressed storage
+bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& given) {
+  // The pattern comparison and the copy read compressed storage; an assembled matrix has it.
+  std::optional<Eigen::SparseMatrix<double>> compressed;
+  if (!given.isCompressed()) compressed.emplace(given).makeCompressed();
+  const Eigen::SparseMatrix<double>& lower = compressed ? *compressed : given;
   Impl& impl = *impl_;
   const bool analyse = !impl.same_pattern(lower);
   impl.take(lower, analyse);

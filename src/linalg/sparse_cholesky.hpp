@@ -25,7 +25,7 @@ class SparseCholesky {
 
   /// Analyses the pattern of `lower` (the lower triangle of a symmetric matrix) when it differs
   /// from the last one analysed, then factorises; false when the matrix is not positive definite.
-  bool factorize(Eigen::SparseMatrix<double> lower);
+  bool factorize(const Eigen::SparseMatrix<double>& lower);
 
   /// x with A x = b for the matrix last factorised successfully.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;

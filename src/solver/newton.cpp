@@ -181,18 +181,18 @@ class NewtonStep {
 
   // Solves (H + μ·s·I) δ = f, s the mean diagonal of H over the slots with a direction, to the
   // relative tolerance `eta` when the solve is iterative; raises μ until δ is a descent
-  // direction.
-  std::optional<Eigen::VectorXd> solve(const Eigen::SparseMatrix<double>& h, const Eigen::VectorXd& f,
+  // direction. H is regularised in place, from its own diagonal each time.
+  std::optional<Eigen::VectorXd> solve(Eigen::SparseMatrix<double> h, const Eigen::VectorXd& f,
                                        const FreeDirections& directions, double eta) {
     if (!linear_)
       linear_ = make_linear_solver(concrete_method(linear_method_, directions.unknowns()));
-    const double mean = h.diagonal().sum() / directions.used;
+    const Eigen::VectorXd diagonal = h.diagonal();
+    const double mean = h.diagonal().sum() / directions.used;  // summed in the sparse order, as ever
     const double scale = mean > 0.0 ? mean : 1.0;
     const std::vector<int> component = slot_components(directions);
     for (; mu_ <= kMaxRegularization; mu_ *= 10.0) {
-      Eigen::SparseMatrix<double> m = h;
-      m.diagonal().array() += mu_ * scale;
-      if (!linear_->set_matrix(std::move(m), component)) continue;
+      h.diagonal() = diagonal.array() + mu_ * scale;
+      if (!linear_->set_matrix(h, component)) continue;
       Eigen::VectorXd delta = linear_->solve(f, eta);
       loose_ = loose_ || (eta > kMeasuringForcing && linear_->method() != LinearMethod::cholesky);
       if (delta.allFinite() && delta.dot(f) > 0.0) return delta;
