@@ -111,7 +111,8 @@ Eigen::SparseMatrix<double> ReducedHessian::assemble(const Model& model, const s
     row_.clear();
     add_pairs(model.node_count(), {});
   }
-  if (!sum_blocks(model, x, directions, lagged)) sum_blocks(model, x, directions, lagged);  // with the pairs found
+  if (!sum_blocks(model, x, directions, lagged))
+    sum_blocks(model, x, directions, lagged);  // again, with the pairs the first pass found
   return written_out(directions);
 }
 

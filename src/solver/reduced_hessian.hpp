@@ -1,6 +1,7 @@
 #pragma once
 // Newton's matrix: the sum of the model's terms' stiffness (term.hpp), each positive
 // semi-definite, in the nodes' free directions (free_directions.hpp).
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -14,9 +15,9 @@ namespace fabform {
 /// Assembles Newton's matrix, lower triangle only (what the factorisations read), every diagonal
 /// entry stored so that a regularisation can be added to it in place. The terms' 3 × 3 blocks,
 /// in the free directions, are summed per pair of nodes into the pairs the last assembly found,
-/// then written out column by column: no list of entries to sort. The pairs are found again, in a second pass of the
-/// terms, only when a term couples two nodes they lack (the first time), and are never dropped,
-/// so the matrix's pattern stays the same from one Newton step to the next.
+/// then written out column by column: no list of entries to sort. The pairs are found again, in
+/// a second pass of the terms, only when a term couples two nodes they lack (the first time),
+/// and are never dropped, so the matrix's pattern stays the same from one Newton step to the next.
 class ReducedHessian {
  public:
   /// `lagged` is a term Newton holds for one iteration (friction), added to the model's own.

@@ -1,5 +1,6 @@
 // Newton's sparse Cholesky: the same answer, bit for bit, on one thread and on two, whether it
-// splits the matrix or not; a new pattern is analysed anew.
+// splits the matrix or not; a new pattern is analysed anew; a matrix in uncompressed storage is
+// factorised as its compressed copy is.
 #include "linalg/sparse_cholesky.hpp"
 
 #include <gtest/gtest.h>
@@ -44,6 +45,22 @@ TEST(SparseCholesky, AnalysesANewPattern) {
     const Eigen::VectorXd b = Eigen::VectorXd::Ones(lower.rows());
     EXPECT_LE((test::symmetric(lower) * cholesky.solve(b) - b).norm(), 1e-10 * b.norm()) << side;
   }
+}
+
+// Inserting an entry leaves Eigen's storage uncompressed (room kept per column): the factorisation
+// reads it as compressed, bit for bit.
+TEST(SparseCholesky, AnUncompressedMatrixIsFactorisedAsItsCompressedCopy) {
+  Eigen::SparseMatrix<double> loose = test::grid_stiffness(10, 0.01);
+  loose.coeffRef(loose.rows() - 1, 0) = 1e-3;  // a new entry, in the lower triangle
+  ASSERT_FALSE(loose.isCompressed());
+  Eigen::SparseMatrix<double> tight = loose;
+  tight.makeCompressed();
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(loose.rows());
+  SparseCholesky from_loose(kMinimum), from_tight(kMinimum);
+  ASSERT_TRUE(from_loose.factorize(loose));
+  ASSERT_TRUE(from_tight.factorize(tight));
+  EXPECT_TRUE(from_loose.solve(b) == from_tight.solve(b));
+  EXPECT_LE((test::symmetric(tight) * from_loose.solve(b) - b).norm(), 1e-10 * b.norm());
 }
 
 }  // namespace
