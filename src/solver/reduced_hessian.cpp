@@ -111,8 +111,10 @@ Eigen::SparseMatrix<double> ReducedHessian::assemble(const Model& model, const s
     row_.clear();
     add_pairs(model.node_count(), {});
   }
-  if (!sum_blocks(model, x, directions, lagged))
-    sum_blocks(model, x, directions, lagged);  // again, with the pairs the first pass found
+  // Again with the pairs a pass found, until none is missing (the pairs only grow, so it ends;
+  // the terms hand the same pairs each time, so at most twice).
+  while (!sum_blocks(model, x, directions, lagged)) {
+  }
   return written_out(directions);
 }
 
