@@ -10,13 +10,9 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-namespace fabform {
+#include "linalg/conjugate_gradients.hpp"
 
-struct CgResult {
-  Eigen::VectorXd x;
-  int iterations = 0;
-  double relative_residual = 0.0;  // ‖b − A x‖₂ / ‖b‖₂
-};
+namespace fabform {
 
 class AmgConjugateGradient {
  public:

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "linalg/amg_conjugate_gradient.hpp"
+#include "linalg/lattice_multigrid.hpp"
 #include "linalg/sparse_cholesky.hpp"
 
 namespace fabform {
@@ -35,11 +36,12 @@ namespace {
 
 class CholeskySolver final : public LinearSolver {
  public:
-  bool set_matrix(const Eigen::SparseMatrix<double>& lower, const std::vector<int>&) override {
+  bool set_matrix(const Eigen::SparseMatrix<double>& lower, const UnknownLayout&) override {
     return factor_.factorize(lower);
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b, double) override { return factor_.solve(b); }
   LinearMethod method() const override { return LinearMethod::cholesky; }
+  std::string name() const override { return "cholesky"; }
   long iterations() const override { return 0; }
 
  private:
@@ -50,24 +52,31 @@ class CholeskySolver final : public LinearSolver {
 // still a descent direction, and Newton's line search judges it.
 constexpr int kMaxCgIterations = 500;
 
-// A hierarchy is built for every matrix: kept for the next Newton step's (hypre's V-cycle takes
-// the finest matrix from its argument), its stale smoother made the preconditioner indefinite.
+// Geometric on a lattice, algebraic (BoomerAMG) without one. A hierarchy is built for every
+// matrix: kept for the next Newton step's (hypre's V-cycle takes the finest matrix from its
+// argument), its stale smoother made the preconditioner indefinite.
 class MultigridSolver final : public LinearSolver {
  public:
-  bool set_matrix(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& component) override {
-    cg_.set_matrix(lower, component);
+  bool set_matrix(const Eigen::SparseMatrix<double>& lower, const UnknownLayout& layout) override {
+    lattice_ = layout.lattice.has_value();
+    if (lattice_) geometric_.set_matrix(lower, *layout.lattice);
+    else algebraic_.set_matrix(lower, layout.component);
     return true;
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b, double relative_tolerance) override {
-    CgResult r = cg_.solve(b, relative_tolerance, kMaxCgIterations);
+    CgResult r = lattice_ ? geometric_.solve(b, relative_tolerance, kMaxCgIterations)
+                          : algebraic_.solve(b, relative_tolerance, kMaxCgIterations);
     iterations_ += r.iterations;
     return std::move(r.x);
   }
   LinearMethod method() const override { return LinearMethod::multigrid; }
+  std::string name() const override { return lattice_ ? "multigrid (lattice)" : "multigrid (algebraic)"; }
   long iterations() const override { return iterations_; }
 
  private:
-  AmgConjugateGradient cg_;
+  bool lattice_ = false;
+  LatticeMultigrid geometric_;
+  AmgConjugateGradient algebraic_;
   long iterations_ = 0;
 };
 

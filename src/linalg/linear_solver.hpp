@@ -5,11 +5,14 @@
 // whose cost grows linearly. `automatic` takes the factorisation on grids small enough for it to
 // be the faster (measured: tools/bench_solvers.py --scale) and multigrid beyond.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+
+#include "linalg/lattice_prolongation.hpp"
 
 namespace fabform {
 
@@ -26,17 +29,25 @@ constexpr int kMultigridMinUnknowns = 1'000'000;
 /// The method `method` stands for with this many unknowns (itself unless automatic).
 LinearMethod concrete_method(LinearMethod method, int unknowns);
 
+/// What a solver may know of the unknowns besides the matrix.
+struct UnknownLayout {
+  std::vector<int> component;              // per unknown: its place in its node's displacement (0, 1, 2)
+  std::optional<LatticeUnknowns> lattice;  // when the nodes lie on a lattice: multigrid is geometric
+};
+
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
-  /// Takes a symmetric matrix by its lower triangle, every diagonal entry stored; `component`
-  /// gives each unknown's place in its node's displacement (0, 1, 2). False when the matrix is
-  /// found not to be positive definite.
-  virtual bool set_matrix(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& component) = 0;
+  /// Takes a symmetric matrix by its lower triangle, every diagonal entry stored. False when the
+  /// matrix is found not to be positive definite.
+  virtual bool set_matrix(const Eigen::SparseMatrix<double>& lower, const UnknownLayout& layout) = 0;
   /// x with A x = b: exactly, or with ‖b − A x‖₂ ≤ relative_tolerance · ‖b‖₂ for an iterative
   /// method, whose every iterate is a descent direction for ½x'Ax − b'x.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b, double relative_tolerance) = 0;
   virtual LinearMethod method() const = 0;
+  /// The method as result.json names it: "cholesky", "multigrid (lattice)" for the geometric
+  /// hierarchy, "multigrid (algebraic)" for BoomerAMG's.
+  virtual std::string name() const = 0;
   /// Inner iterations over every solve so far (0 for a direct method).
   virtual long iterations() const = 0;
 };

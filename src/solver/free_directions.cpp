@@ -1,5 +1,7 @@
 #include "solver/free_directions.hpp"
 
+#include <optional>
+
 namespace fabform {
 namespace {
 
@@ -63,11 +65,36 @@ Eigen::VectorXd reduced_forces(const FreeDirections& directions,
   return reduced;
 }
 
-std::vector<int> slot_components(const FreeDirections& directions) {
-  std::vector<int> component(static_cast<std::size_t>(directions.unknowns()));
+namespace {
+
+std::optional<LatticeUnknowns> lattice_unknowns(const FreeDirections& directions, const Fabric& fabric) {
+  if (fabric.spec().mesh == FabricSpec::Mesh::arc || fabric.nodes_warp() < 2 || fabric.nodes_weft() < 2)
+    return std::nullopt;
+  LatticeUnknowns l;
+  l.lattice_size = {fabric.nodes_warp(), fabric.nodes_weft()};
+  l.node_lattice.resize(static_cast<std::size_t>(fabric.node_count()));
+  l.node.resize(static_cast<std::size_t>(directions.unknowns()));
+  l.direction.resize(l.node.size());
+  for (int k = 0; k < fabric.node_count(); ++k) {
+    l.node_lattice[static_cast<std::size_t>(k)] = {fabric.i_of(k), fabric.j_of(k)};
+    for (int c = 0; c < directions.count(k); ++c) {
+      const auto u = static_cast<std::size_t>(directions.offset[k] + c);
+      l.node[u] = k;
+      l.direction[u] = directions.of(k).col(c);
+    }
+  }
+  return l;
+}
+
+}  // namespace
+
+UnknownLayout unknown_layout(const FreeDirections& directions, const Fabric& fabric) {
+  UnknownLayout layout;
+  layout.component.resize(static_cast<std::size_t>(directions.unknowns()));
   for (int k = 0; k + 1 < static_cast<int>(directions.offset.size()); ++k)
-    for (int c = 0; c < directions.count(k); ++c) component[directions.offset[k] + c] = c;
-  return component;
+    for (int c = 0; c < directions.count(k); ++c) layout.component[directions.offset[k] + c] = c;
+  layout.lattice = lattice_unknowns(directions, fabric);
+  return layout;
 }
 
 }  // namespace fabform

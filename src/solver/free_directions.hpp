@@ -14,6 +14,7 @@
 
 #include "fabform/model/model.hpp"
 #include "fabform/solver/solver_state.hpp"
+#include "linalg/linear_solver.hpp"
 
 namespace fabform {
 
@@ -35,9 +36,11 @@ FreeDirections free_directions(const Model& model, const std::vector<NodeContact
 std::vector<Eigen::Vector3d> node_steps(const FreeDirections& directions,
                                         const Eigen::VectorXd& unknowns);
 
-/// Each unknown's place among its node's slots (0, 1, 2): along x, y, z for a free node, and
-/// for the tangent directions of a node on a body in the order of the axes they came from.
-std::vector<int> slot_components(const FreeDirections& directions);
+/// What the linear solve may know of the unknowns: each one's place among its node's slots
+/// (0, 1, 2: along x, y, z for a free node, and for the tangent directions of a node on a body
+/// in the order of the axes they came from); and, where the fabric's nodes lie on a lattice
+/// (not an arc mesh's rings and spokes), each one's node, lattice place and direction.
+UnknownLayout unknown_layout(const FreeDirections& directions, const Fabric& fabric);
 
 /// The node forces in Newton's unknowns: each node's force on its free directions.
 Eigen::VectorXd reduced_forces(const FreeDirections& directions,

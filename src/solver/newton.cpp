@@ -189,10 +189,10 @@ class NewtonStep {
     const Eigen::VectorXd diagonal = h.diagonal();
     const double mean = h.diagonal().sum() / directions.used;  // summed in the sparse order, as ever
     const double scale = mean > 0.0 ? mean : 1.0;
-    const std::vector<int> component = slot_components(directions);
+    const UnknownLayout layout = unknown_layout(directions, model_.fabric);
     for (; mu_ <= kMaxRegularization; mu_ *= 10.0) {
       h.diagonal() = diagonal.array() + mu_ * scale;
-      if (!linear_->set_matrix(h, component)) continue;
+      if (!linear_->set_matrix(h, layout)) continue;
       Eigen::VectorXd delta = linear_->solve(f, eta);
       loose_ = loose_ || (eta > kMeasuringForcing && linear_->method() != LinearMethod::cholesky);
       if (delta.allFinite() && delta.dot(f) > 0.0) return delta;
@@ -255,7 +255,7 @@ class NewtonStep {
 
 void record_linear_solver(Summary& summary, const NewtonStep& step) {
   if (const LinearSolver* linear = step.linear_solver()) {
-    summary.linear_solver = to_string(linear->method());
+    summary.linear_solver = linear->name();
     summary.linear_iterations = linear->iterations();
   }
 }

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <string>
+
 #include "support/grid_stiffness.hpp"
 
 namespace fabform {
@@ -29,22 +32,31 @@ TEST(LinearSolver, AutoTurnsToMultigridAtItsSize) {
   EXPECT_THROW(make_linear_solver(LinearMethod::automatic), std::invalid_argument);
 }
 
-TEST(LinearSolver, BothMethodsSolveTheSameSystem) {
-  const Eigen::SparseMatrix<double> lower = test::grid_stiffness(16, 0.01);
+TEST(LinearSolver, EveryMethodSolvesTheSameSystem) {
+  const int side = 16;
+  const Eigen::SparseMatrix<double> lower = test::grid_stiffness(side, 0.01);
   const Eigen::SparseMatrix<double> a = test::symmetric(lower);
-  std::vector<int> component(static_cast<std::size_t>(lower.rows()));
-  for (std::size_t i = 0; i < component.size(); ++i) component[i] = static_cast<int>(i % 3);
+  UnknownLayout mesh{test::grid_components(side), std::nullopt};
+  UnknownLayout lattice{test::grid_components(side), test::grid_lattice(side)};
   Eigen::VectorXd b(lower.rows());
   for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = std::sin(0.1 * static_cast<double>(i));
-  for (LinearMethod m : {LinearMethod::cholesky, LinearMethod::multigrid}) {
-    const std::unique_ptr<LinearSolver> solver = make_linear_solver(m);
-    EXPECT_EQ(solver->method(), m);
-    ASSERT_TRUE(solver->set_matrix(lower, component));
+  struct Case {
+    LinearMethod method;
+    const UnknownLayout* layout;
+    std::string name;
+  };
+  for (const Case& c : {Case{LinearMethod::cholesky, &lattice, "cholesky"},
+                        Case{LinearMethod::multigrid, &mesh, "multigrid (algebraic)"},
+                        Case{LinearMethod::multigrid, &lattice, "multigrid (lattice)"}}) {
+    const std::unique_ptr<LinearSolver> solver = make_linear_solver(c.method);
+    EXPECT_EQ(solver->method(), c.method);
+    ASSERT_TRUE(solver->set_matrix(lower, *c.layout));
+    EXPECT_EQ(solver->name(), c.name);
     const double tolerance = 1e-5;
     const Eigen::VectorXd x = solver->solve(b, tolerance);
     const double residual = (b - a * x).norm() / b.norm();
-    EXPECT_LE(residual, m == LinearMethod::cholesky ? 1e-12 : tolerance) << to_string(m);
-    EXPECT_EQ(solver->iterations() > 0, m == LinearMethod::multigrid) << to_string(m);
+    EXPECT_LE(residual, c.method == LinearMethod::cholesky ? 1e-12 : tolerance) << c.name;
+    EXPECT_EQ(solver->iterations() > 0, c.method == LinearMethod::multigrid) << c.name;
   }
 }
 
@@ -52,7 +64,7 @@ TEST(LinearSolver, CholeskyFindsAnIndefiniteMatrix) {
   Eigen::SparseMatrix<double> lower = test::grid_stiffness(5, 0.01);
   lower.coeffRef(7, 7) = -1.0;
   const std::unique_ptr<LinearSolver> solver = make_linear_solver(LinearMethod::cholesky);
-  EXPECT_FALSE(solver->set_matrix(lower, std::vector<int>(static_cast<std::size_t>(lower.rows()), 0)));
+  EXPECT_FALSE(solver->set_matrix(lower, UnknownLayout{test::grid_components(5), std::nullopt}));
 }
 
 }  // namespace

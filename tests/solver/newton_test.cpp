@@ -111,7 +111,7 @@ TEST(Newton, MultigridStepsReachTheCholeskyRest) {
   expect_converged_outside(model, by_multigrid, inexact);
   EXPECT_EQ(exact.linear_solver, "cholesky");
   EXPECT_EQ(exact.linear_iterations, 0);
-  EXPECT_EQ(inexact.linear_solver, "multigrid");
+  EXPECT_EQ(inexact.linear_solver, "multigrid (lattice)");
   EXPECT_GE(inexact.linear_iterations, inexact.iterations);
   expect_same_rest(model, by_multigrid, by_cholesky);
 }

@@ -10,6 +10,7 @@
 #include <Eigen/SparseCore>
 
 #include "linalg/cholmod_factor.hpp"
+#include "linalg/lattice_prolongation.hpp"
 
 namespace fabform::test {
 
@@ -51,6 +52,28 @@ inline LowerCsc to_lower_csc(const Eigen::SparseMatrix<double>& m) {
   out.row.assign(m.innerIndexPtr(), m.innerIndexPtr() + m.nonZeros());
   out.value.assign(m.valuePtr(), m.valuePtr() + m.nonZeros());
   return out;
+}
+
+/// The grid's unknowns' places in their nodes' displacements: x, y, z at every node.
+inline std::vector<int> grid_components(int side) {
+  std::vector<int> c(static_cast<std::size_t>(3 * side * side));
+  for (std::size_t i = 0; i < c.size(); ++i) c[i] = static_cast<int>(i % 3);
+  return c;
+}
+
+/// The grid as a lattice: node j·side + i at (i, j), its unknowns along x, y and z.
+inline LatticeUnknowns grid_lattice(int side) {
+  LatticeUnknowns l;
+  l.lattice_size = {side, side};
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      l.node_lattice.push_back({i, j});
+      for (int d = 0; d < 3; ++d) {
+        l.node.push_back(j * side + i);
+        l.direction.push_back(Eigen::Vector3d::Unit(d));
+      }
+    }
+  return l;
 }
 
 /// The full symmetric matrix of a lower triangle, to multiply with.

@@ -1,0 +1,99 @@
+#include "linalg/lattice_multigrid.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+namespace fabform {
+
+namespace {
+
+// The coarsest lattice has at most this many points a side: factorised whole, it costs less
+// than a smoothing sweep on the finest level.
+constexpr int kCoarsestSide = 24;
+// Sweeps before and after each coarse correction: on the dome at 101 × 101 nodes, every step
+// solved to 1e-4, 1, 2 and 3 took 1012, 641 and 454 conjugate-gradient iterations, 3 the least
+// time.
+constexpr int kSweeps = 3;
+
+// Each node's first unknown, and one past the last: runs of one node in `node`.
+std::vector<int> node_blocks(const std::vector<int>& node) {
+  std::vector<int> start{0};
+  for (std::size_t u = 1; u < node.size(); ++u)
+    if (node[u] != node[u - 1]) start.push_back(static_cast<int>(u));
+  start.push_back(static_cast<int>(node.size()));
+  return start;
+}
+
+std::vector<int> triples(Eigen::Index unknowns) {
+  std::vector<int> start;
+  for (Eigen::Index u = 0; u <= unknowns; u += 3) start.push_back(static_cast<int>(u));
+  return start;
+}
+
+// The coarsest matrix made factorisable: 1 on the diagonal of points no finer unknown reaches
+// (their rows and columns are empty), and a shift of 1e-10 of the mean diagonal, for a coarse
+// move that no finer unknown can make (a point amid nodes pressed on one plane, moving along
+// its normal), which the Galerkin product leaves without stiffness.
+Eigen::SparseMatrix<double> factorisable(const RowMatrix& a) {
+  Eigen::SparseMatrix<double> m = a;
+  const double shift = 1e-10 * m.diagonal().mean();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    if (m.coeff(i, i) <= 0.0) m.coeffRef(i, i) = 1.0;
+    m.coeffRef(i, i) += shift;
+  }
+  return m;
+}
+
+}  // namespace
+
+void LatticeMultigrid::set_matrix(const Eigen::SparseMatrix<double>& lower, const LatticeUnknowns& unknowns) {
+  if (lower.rows() == 0 || static_cast<Eigen::Index>(unknowns.node.size()) != lower.rows())
+    throw std::invalid_argument("LatticeMultigrid: an empty matrix or an unknown's node missing");
+  levels_.clear();
+  RowMatrix a = lower.selfadjointView<Eigen::Lower>();
+  RowMatrix p = unknown_prolongation(unknowns);
+  std::array<int, 2> size = coarser_lattice(unknowns.lattice_size);
+  std::vector<int> blocks = node_blocks(unknowns.node);
+  for (;;) {
+    Level level;
+    level.restriction = p.transpose();
+    RowMatrix coarse = RowMatrix(level.restriction * a) * p;
+    level.smoother = BlockGaussSeidel(a, std::move(blocks));
+    blocks = triples(coarse.rows());
+    level.a = std::move(a);
+    level.prolongation = std::move(p);
+    levels_.push_back(std::move(level));
+    a = std::move(coarse);
+    if (std::max(size[0], size[1]) <= kCoarsestSide) break;
+    p = lattice_prolongation(size);
+    size = coarser_lattice(size);
+  }
+  coarsest_.compute(factorisable(a));
+  if (coarsest_.info() != Eigen::Success)
+    throw std::runtime_error("LatticeMultigrid: the coarsest level is not positive definite");
+}
+
+Eigen::VectorXd LatticeMultigrid::cycle(std::size_t index, const Eigen::VectorXd& b) const {
+  if (index == levels_.size()) return coarsest_.solve(b);
+  const Level& level = levels_[index];
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  for (int sweep = 0; sweep < kSweeps; ++sweep) level.smoother.sweep(level.a, b, x, true);
+  const Eigen::VectorXd residual = b - level.a * x;
+  x += level.prolongation * cycle(index + 1, level.restriction * residual);
+  for (int sweep = 0; sweep < kSweeps; ++sweep) level.smoother.sweep(level.a, b, x, false);
+  return x;
+}
+
+Eigen::VectorXd LatticeMultigrid::v_cycle(const Eigen::VectorXd& b) const {
+  if (levels_.empty()) throw std::logic_error("LatticeMultigrid used before set_matrix");
+  return cycle(0, b);
+}
+
+CgResult LatticeMultigrid::solve(const Eigen::VectorXd& b, double relative_tolerance, int max_iterations) const {
+  if (levels_.empty()) throw std::logic_error("LatticeMultigrid::solve before set_matrix");
+  if (b.size() != levels_.front().a.rows()) throw std::invalid_argument("LatticeMultigrid::solve: b has the wrong size");
+  return preconditioned_cg(levels_.front().a, b, [this](const Eigen::VectorXd& r) { return v_cycle(r); },
+                           relative_tolerance, max_iterations);
+}
+
+}  // namespace fabform
