@@ -52,20 +52,25 @@ class CholeskySolver final : public LinearSolver {
 // still a descent direction, and Newton's line search judges it.
 constexpr int kMaxCgIterations = 500;
 
-// Geometric on a lattice, algebraic (BoomerAMG) without one. A hierarchy is built for every
-// matrix: kept for the next Newton step's (hypre's V-cycle takes the finest matrix from its
-// argument), its stale smoother made the preconditioner indefinite.
+// Geometric on a lattice, algebraic (BoomerAMG) without one; BoomerAMG, and the MPI it runs on,
+// only started for a fabric without a lattice. A hierarchy is built for every matrix: kept for
+// the next Newton step's (hypre's V-cycle takes the finest matrix from its argument), its stale
+// smoother made the preconditioner indefinite.
 class MultigridSolver final : public LinearSolver {
  public:
   bool set_matrix(const Eigen::SparseMatrix<double>& lower, const UnknownLayout& layout) override {
     lattice_ = layout.lattice.has_value();
-    if (lattice_) geometric_.set_matrix(lower, *layout.lattice);
-    else algebraic_.set_matrix(lower, layout.component);
+    if (lattice_) {
+      geometric_.set_matrix(lower, *layout.lattice);
+      return true;
+    }
+    if (!algebraic_) algebraic_ = std::make_unique<AmgConjugateGradient>();
+    algebraic_->set_matrix(lower, layout.component);
     return true;
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b, double relative_tolerance) override {
     CgResult r = lattice_ ? geometric_.solve(b, relative_tolerance, kMaxCgIterations)
-                          : algebraic_.solve(b, relative_tolerance, kMaxCgIterations);
+                          : algebraic_->solve(b, relative_tolerance, kMaxCgIterations);
     iterations_ += r.iterations;
     return std::move(r.x);
   }
@@ -76,7 +81,7 @@ class MultigridSolver final : public LinearSolver {
  private:
   bool lattice_ = false;
   LatticeMultigrid geometric_;
-  AmgConjugateGradient algebraic_;
+  std::unique_ptr<AmgConjugateGradient> algebraic_;
   long iterations_ = 0;
 };
 

@@ -156,7 +156,7 @@ TEST(LatticeMultigrid, IterationsDoNotGrowWithTheGrid) {
   EXPECT_LE(even, small + small / 2 + 2) << small << " on 33 × 33, " << even << " on 64 × 64";
 }
 
-TEST(LatticeMultigrid, HoldsTheMembranesSoftModesWhereAlgebraicMultigridDoesNot) {
+TEST(LatticeMultigrid, HoldsTheSoftModesThatAlgebraicMultigridMisses) {
   const System s = membrane(65, 1e-3, 3);
   const Eigen::VectorXd b = load(s.lower.rows());
   LatticeMultigrid lattice;
