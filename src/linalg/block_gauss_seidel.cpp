@@ -46,7 +46,7 @@ BlockGaussSeidel::BlockGaussSeidel(const RowMatrix& a, std::vector<int> block_st
     throw std::invalid_argument("BlockGaussSeidel: the blocks do not cover the matrix");
   for (std::size_t b = 0; b + 1 < block_start_.size(); ++b)
     if (block_start_[b + 1] - block_start_[b] > 3 || block_start_[b + 1] < block_start_[b])
-      throw std::invalid_argument("BlockGaussSeidel: a node with more than 3 unknowns");
+      throw std::invalid_argument("BlockGaussSeidel: a node with more than 3 unknowns, or blocks out of order");
   inverse_ = block_inverses(a, block_start_);
 }
 

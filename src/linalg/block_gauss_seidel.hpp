@@ -2,10 +2,10 @@
 // Block Gauss–Seidel, the lattice multigrid's smoother: each node's unknowns are solved together,
 // which a membrane needs, as its in-plane stiffness couples a node's x, y and z (on a curved
 // fabric) a thousand times more strongly than the tension holds the normal. The nodes are taken
-// in lattice order, one after another: a sweep in colours (nodes of a colour at once, on every
-// thread) took ten times the conjugate-gradient iterations on the dome, as it no longer carries
-// a correction along a line of taut springs through a slack region in one sweep. A forward sweep
-// followed by a backward one is a symmetric smoother.
+// in lattice order, one after another: a sweep in colours (the nodes of a colour at once, on
+// every thread) took 2031 conjugate-gradient iterations against 192 on the dome at N = 401, as
+// it no longer carries a correction along a line of taut springs through a slack region in one
+// sweep. A forward sweep followed by a backward one is a symmetric smoother.
 #include <vector>
 
 #include <Eigen/Core>

@@ -1,5 +1,7 @@
 #include "linalg/lattice_multigrid.hpp"
 
+#include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <utility>
 

@@ -1,5 +1,6 @@
 #include "linalg/lattice_prolongation.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace fabform {
@@ -8,8 +9,8 @@ namespace {
 
 // A fine index's place between the coarse indices either side of it.
 struct Between {
-  int low = 0, high = 0;       // coarse indices
-  double high_weight = 0.0;    // the low one's is 1 − high_weight
+  int low = 0, high = 0;     // coarse indices
+  double high_weight = 0.0;  // the low one's is 1 − high_weight
 };
 
 // Coarse index c sits on fine index min(2c, n − 1).
