@@ -1,9 +1,10 @@
 #pragma once
 // Newton's linear solve behind one interface: a sparse Cholesky factorisation (sparse_cholesky.hpp),
 // exact, whose time and memory grow as the unknowns' 1.5th power on a fabric grid; or conjugate
-// gradients preconditioned by algebraic multigrid (amg_conjugate_gradient.hpp), to a tolerance,
-// whose cost grows linearly. `automatic` takes the factorisation on grids small enough for it to
-// be the faster (measured: tools/bench_solvers.py --scale) and multigrid beyond.
+// gradients preconditioned by multigrid, to a tolerance, whose cost grows linearly: geometric on
+// a fabric's lattice (lattice_multigrid.hpp), algebraic on an arc mesh
+// (amg_conjugate_gradient.hpp). `automatic` takes the factorisation on grids small enough for it
+// to be the faster (measured: tools/bench_solvers.py --scale) and multigrid beyond.
 #include <memory>
 #include <optional>
 #include <string>

@@ -4,10 +4,12 @@
 // which add nothing to the Hessian). Each spring's stiffness is projected positive
 // semi-definite; the linear system, in each node's free directions (locked axes and the normal
 // of the body a node presses on eliminated), regularised by μ·I, is solved by a sparse Cholesky
-// factorisation (CHOLMOD) or, on large grids, by conjugate gradients preconditioned by algebraic
-// multigrid (hypre's BoomerAMG) to a tolerance that tightens as the forces fall (inexact Newton); a backtracking line search on the energy moves the nodes as relax does
-// (a node that would enter a body stops on it, a node on a body slides and is projected back,
-// and leaves when its force points out). Progress is seed 003's ‖V‖∞, as relax measures it.
+// factorisation (CHOLMOD) or, on large grids, by conjugate gradients preconditioned by multigrid
+// (geometric on the fabric's lattice, hypre's BoomerAMG on an arc mesh) to a tolerance that
+// tightens as the forces fall (inexact Newton); a backtracking line search on the energy moves
+// the nodes as relax does (a node that would enter a body stops on it, a node on a body slides
+// and is projected back, and leaves when its force points out). Progress is seed 003's ‖V‖∞, as
+// relax measures it.
 #include <string>
 
 #include "fabform/model/model.hpp"
@@ -32,7 +34,7 @@ struct NewtonOptions {
   // contact, coulomb_friction.hpp).
   double friction_creep = 1e-2;
   // The linear solve of each step: "cholesky" (exact), "multigrid" (conjugate gradients
-  // preconditioned by algebraic multigrid, to an inexact Newton tolerance), or "auto": the
+  // preconditioned by multigrid, to an inexact Newton tolerance), or "auto": the
   // factorisation below the size where multigrid is the faster (linalg/linear_solver.hpp).
   std::string linear_solver = "auto";
   // Whether the run ends with the estimate of its distance from the rest (one more solve);
