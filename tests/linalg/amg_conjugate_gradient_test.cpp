@@ -13,11 +13,7 @@
 namespace fabform {
 namespace {
 
-std::vector<int> xyz_components(Eigen::Index unknowns) {
-  std::vector<int> c(static_cast<std::size_t>(unknowns));
-  for (std::size_t i = 0; i < c.size(); ++i) c[i] = static_cast<int>(i % 3);
-  return c;
-}
+using test::xyz_components;
 
 Eigen::VectorXd load(Eigen::Index n) {
   Eigen::VectorXd b(n);

@@ -161,10 +161,8 @@ TEST(LatticeMultigrid, HoldsTheSoftModesThatAlgebraicMultigridMisses) {
   const Eigen::VectorXd b = load(s.lower.rows());
   LatticeMultigrid lattice;
   lattice.set_matrix(s.lower, s.unknowns);
-  std::vector<int> component(s.unknowns.node.size());
-  for (std::size_t u = 0; u < component.size(); ++u) component[u] = static_cast<int>(u % 3);
   AmgConjugateGradient algebraic;
-  algebraic.set_matrix(s.lower, component);
+  algebraic.set_matrix(s.lower, test::xyz_components(s.lower.rows()));
   const int geometric = lattice.solve(b, 1e-8, 1000).iterations;
   const int amg = algebraic.solve(b, 1e-8, 1000).iterations;
   EXPECT_LT(2 * geometric, amg) << geometric << " lattice, " << amg << " BoomerAMG";

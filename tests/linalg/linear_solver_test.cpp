@@ -36,8 +36,8 @@ TEST(LinearSolver, EveryMethodSolvesTheSameSystem) {
   const int side = 16;
   const Eigen::SparseMatrix<double> lower = test::grid_stiffness(side, 0.01);
   const Eigen::SparseMatrix<double> a = test::symmetric(lower);
-  UnknownLayout mesh{test::grid_components(side), std::nullopt};
-  UnknownLayout lattice{test::grid_components(side), test::grid_lattice(side)};
+  UnknownLayout mesh{test::xyz_components(lower.rows()), std::nullopt};
+  UnknownLayout lattice{test::xyz_components(lower.rows()), test::grid_lattice(side)};
   Eigen::VectorXd b(lower.rows());
   for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = std::sin(0.1 * static_cast<double>(i));
   struct Case {
@@ -64,7 +64,7 @@ TEST(LinearSolver, CholeskyFindsAnIndefiniteMatrix) {
   Eigen::SparseMatrix<double> lower = test::grid_stiffness(5, 0.01);
   lower.coeffRef(7, 7) = -1.0;
   const std::unique_ptr<LinearSolver> solver = make_linear_solver(LinearMethod::cholesky);
-  EXPECT_FALSE(solver->set_matrix(lower, UnknownLayout{test::grid_components(5), std::nullopt}));
+  EXPECT_FALSE(solver->set_matrix(lower, UnknownLayout{test::xyz_components(lower.rows()), std::nullopt}));
 }
 
 }  // namespace

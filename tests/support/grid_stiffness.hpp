@@ -54,9 +54,9 @@ inline LowerCsc to_lower_csc(const Eigen::SparseMatrix<double>& m) {
   return out;
 }
 
-/// The grid's unknowns' places in their nodes' displacements: x, y, z at every node.
-inline std::vector<int> grid_components(int side) {
-  std::vector<int> c(static_cast<std::size_t>(3 * side * side));
+/// Unknowns 3 to a node, along x, y and z: each one's place in its node's displacement.
+inline std::vector<int> xyz_components(Eigen::Index unknowns) {
+  std::vector<int> c(static_cast<std::size_t>(unknowns));
   for (std::size_t i = 0; i < c.size(); ++i) c[i] = static_cast<int>(i % 3);
   return c;
 }
