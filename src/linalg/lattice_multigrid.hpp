@@ -4,10 +4,10 @@
 // (each a node's move along one free direction: contact normals and locked axes are left out)
 // by interpolating the coarse lattice's displacements bilinearly and projecting them on those
 // directions; coarser levels halve the lattice again, down to a few hundred nodes, factorised.
-// Each level's matrix is the Galerkin product PᵀAP, so the contact constraints and the
-// membrane's out-of-plane stiffness are carried down the hierarchy. Block Gauss–Seidel smoothing
-// (block_gauss_seidel.hpp), forward before the coarse correction and backward after, keeps the
-// V-cycle symmetric positive definite, as conjugate gradients require.
+// Each level's matrix is the Galerkin product PᵀAP (galerkin_product.hpp), so the contact
+// constraints and the membrane's out-of-plane stiffness are carried down the hierarchy. Line
+// Gauss–Seidel smoothing (line_gauss_seidel.hpp), forward before the coarse correction and
+// backward after, keeps the V-cycle symmetric positive definite, as conjugate gradients require.
 #include <cstddef>
 #include <vector>
 
@@ -15,8 +15,8 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#include "linalg/block_gauss_seidel.hpp"
 #include "linalg/conjugate_gradients.hpp"
+#include "linalg/line_gauss_seidel.hpp"
 #include "linalg/lattice_prolongation.hpp"
 
 namespace fabform {
@@ -39,7 +39,7 @@ class LatticeMultigrid {
  private:
   struct Level {
     RowMatrix a;  // whole and symmetric
-    BlockGaussSeidel smoother;
+    LineGaussSeidel smoother;
     RowMatrix prolongation;  // from the next coarser level
     RowMatrix restriction;   // its transpose
   };

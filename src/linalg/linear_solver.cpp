@@ -27,9 +27,10 @@ bool linear_method_named(const std::string& name, LinearMethod* method) {
   return false;
 }
 
-LinearMethod concrete_method(LinearMethod method, int unknowns) {
+LinearMethod concrete_method(LinearMethod method, int unknowns, bool lattice) {
   if (method != LinearMethod::automatic) return method;
-  return unknowns >= kMultigridMinUnknowns ? LinearMethod::multigrid : LinearMethod::cholesky;
+  const int from = lattice ? kLatticeMultigridMinUnknowns : kAlgebraicMultigridMinUnknowns;
+  return unknowns >= from ? LinearMethod::multigrid : LinearMethod::cholesky;
 }
 
 namespace {

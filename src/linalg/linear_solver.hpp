@@ -24,11 +24,15 @@ std::string to_string(LinearMethod method);
 /// The method a name gives; false for an unknown name.
 bool linear_method_named(const std::string& name, LinearMethod* method);
 
-/// From this many unknowns `automatic` takes multigrid.
-constexpr int kMultigridMinUnknowns = 1'000'000;
+/// From this many unknowns `automatic` takes multigrid: on a lattice, where it is geometric
+/// (even with the factorisation at 101 × 101 nodes on the dome, faster from 201 × 201: README),
+/// and elsewhere, where it is BoomerAMG (no faster than the factorisation below a million).
+constexpr int kLatticeMultigridMinUnknowns = 200'000;
+constexpr int kAlgebraicMultigridMinUnknowns = 1'000'000;
 
-/// The method `method` stands for with this many unknowns (itself unless automatic).
-LinearMethod concrete_method(LinearMethod method, int unknowns);
+/// The method `method` stands for with this many unknowns, on a lattice or not (itself unless
+/// automatic).
+LinearMethod concrete_method(LinearMethod method, int unknowns, bool lattice);
 
 /// What a solver may know of the unknowns besides the matrix.
 struct UnknownLayout {

@@ -184,12 +184,12 @@ class NewtonStep {
   // direction. H is regularised in place, from its own diagonal each time.
   std::optional<Eigen::VectorXd> solve(Eigen::SparseMatrix<double> h, const Eigen::VectorXd& f,
                                        const FreeDirections& directions, double eta) {
+    const UnknownLayout layout = unknown_layout(directions, model_.fabric);
     if (!linear_)
-      linear_ = make_linear_solver(concrete_method(linear_method_, directions.unknowns()));
+      linear_ = make_linear_solver(concrete_method(linear_method_, directions.unknowns(), layout.lattice.has_value()));
     const Eigen::VectorXd diagonal = h.diagonal();
     const double mean = h.diagonal().sum() / directions.used;  // summed in the sparse order, as ever
     const double scale = mean > 0.0 ? mean : 1.0;
-    const UnknownLayout layout = unknown_layout(directions, model_.fabric);
     for (; mu_ <= kMaxRegularization; mu_ *= 10.0) {
       h.diagonal() = diagonal.array() + mu_ * scale;
       if (!linear_->set_matrix(h, layout)) continue;

@@ -1,0 +1,131 @@
+#include "linalg/line_gauss_seidel.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "fabform/thread_count.hpp"
+
+namespace fabform {
+
+namespace {
+
+using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+// Added to each line's diagonal, relative to the mean diagonal of `a`: a coarse level's matrix
+// can be singular along a move no finer unknown makes (lattice_multigrid.cpp), and the shift
+// keeps that move finite; it only damps the sweep, which stays convergent.
+constexpr double kShift = 1e-10;
+
+double mean_diagonal(const RowMatrix& a) {
+  double sum = 0.0;
+  for (Eigen::Index r = 0; r < a.rows(); ++r) sum += a.coeff(r, r);
+  return a.rows() > 0 && sum > 0.0 ? sum / static_cast<double>(a.rows()) : 1.0;
+}
+
+}  // namespace
+
+LineGaussSeidel::LineGaussSeidel(const RowMatrix& a, const std::vector<std::array<int, 2>>& place) {
+  if (static_cast<Eigen::Index>(place.size()) != a.rows() || a.rows() != a.cols())
+    throw std::invalid_argument("LineGaussSeidel: a lattice point per unknown of a square matrix is needed");
+  for (const std::array<int, 2>& p : place)
+    if (p[0] < 0 || p[1] < 0) throw std::invalid_argument("LineGaussSeidel: a negative lattice index");
+  families_[0] = family(a, place, 0);
+  families_[1] = family(a, place, 1);
+}
+
+LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::vector<std::array<int, 2>>& place,
+                                                int along) {
+  const auto across = static_cast<std::size_t>(1 - along);
+  int count = 0;
+  for (const std::array<int, 2>& p : place) count = std::max(count, p[across] + 1);
+  Family lines(static_cast<std::size_t>(count));
+  for (std::size_t u = 0; u < place.size(); ++u)
+    lines[static_cast<std::size_t>(place[u][across])].unknowns.push_back(static_cast<int>(u));
+  std::vector<int> line_of(place.size()), position(place.size());
+  for (std::size_t l = 0; l < lines.size(); ++l)
+    for (const int u : lines[l].unknowns) line_of[static_cast<std::size_t>(u)] = static_cast<int>(l);
+  const double shift = kShift * mean_diagonal(a);
+  bool failed = false;
+  // Lines are factorised on every thread: each writes only its own unknowns' positions.
+#pragma omp parallel for schedule(dynamic, 8) if (place.size() >= static_cast<std::size_t>(kMinParallelItems))
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    Line& line = lines[l];
+    std::stable_sort(line.unknowns.begin(), line.unknowns.end(), [&](int s, int t) {
+      return place[static_cast<std::size_t>(s)][static_cast<std::size_t>(along)] <
+             place[static_cast<std::size_t>(t)][static_cast<std::size_t>(along)];
+    });
+    const auto m = static_cast<int>(line.unknowns.size());
+    if (m == 0) continue;
+    for (int k = 0; k < m; ++k) position[static_cast<std::size_t>(line.unknowns[static_cast<std::size_t>(k)])] = k;
+    // The block's lower triangle, column by column: column k is row k's entries right of the
+    // diagonal, a being symmetric.
+    Eigen::SparseMatrix<double> block(m, m);
+    std::vector<std::pair<int, double>> below;
+    for (int k = 0; k < m; ++k) {
+      const int u = line.unknowns[static_cast<std::size_t>(k)];
+      double diagonal = 0.0;
+      below.clear();
+      for (RowMatrix::InnerIterator it(a, u); it; ++it) {
+        const auto c = static_cast<std::size_t>(it.col());
+        if (line_of[c] != static_cast<int>(l)) continue;
+        if (it.col() == u) diagonal = it.value();
+        else if (position[c] > k) below.emplace_back(position[c], it.value());
+      }
+      std::sort(below.begin(), below.end());
+      block.startVec(k);
+      // A point no finer unknown reaches has an empty row: 1 keeps it where it is.
+      block.insertBack(k, k) = (diagonal > 0.0 ? diagonal : 1.0) + shift;
+      for (const auto& [row, value] : below) block.insertBack(row, k) = value;
+    }
+    block.finalize();
+    line.factor = std::make_unique<Factor>(block);
+    if (line.factor->info() != Eigen::Success) {
+#pragma omp atomic write
+      failed = true;
+    }
+  }
+  if (failed) throw std::runtime_error("LineGaussSeidel: a line's block could not be factorised");
+  return lines;
+}
+
+// The line's unknowns corrected by its block's solve of their residual:
+// x_L += Ã_LL⁻¹ (b_L − (A x)_L), Ã_LL the shifted block. With the block exact this is the line's
+// solve given the others; in this form the shift keeps each correction A-self-adjoint, so the
+// backward sweep stays the forward one's adjoint.
+void LineGaussSeidel::relax(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Line& line) {
+  const auto m = static_cast<Eigen::Index>(line.unknowns.size());
+  if (m == 0) return;
+  const int* row_start = a.outerIndexPtr();
+  const int* column = a.innerIndexPtr();
+  const double* value = a.valuePtr();
+  Eigen::VectorXd r(m);
+  for (Eigen::Index k = 0; k < m; ++k) {
+    const int u = line.unknowns[static_cast<std::size_t>(k)];
+    double sum = b[u];
+    for (int p = row_start[u]; p < row_start[u + 1]; ++p) sum -= value[p] * x[column[p]];
+    r[k] = sum;
+  }
+  const Eigen::VectorXd correction = line.factor->solve(r);
+  for (Eigen::Index k = 0; k < m; ++k) x[line.unknowns[static_cast<std::size_t>(k)]] += correction[k];
+}
+
+void LineGaussSeidel::pass(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Family& family,
+                           bool forward) {
+  if (forward)
+    for (const Line& line : family) relax(a, b, x, line);
+  else
+    for (auto line = family.rbegin(); line != family.rend(); ++line) relax(a, b, x, *line);
+}
+
+void LineGaussSeidel::sweep(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool forward) const {
+  if (forward) {
+    pass(a, b, x, families_[0], true);
+    pass(a, b, x, families_[1], true);
+  } else {
+    pass(a, b, x, families_[1], false);
+    pass(a, b, x, families_[0], false);
+  }
+}
+
+}  // namespace fabform
