@@ -1,15 +1,21 @@
 #pragma once
-// A multigrid level's matrix, the Galerkin product PᵀAP, one coarse row at a time: each row is
-// summed in an accumulator over the coarse columns, so neither PᵀA nor AP is ever held (on a
-// million nodes PᵀA was the hierarchy's largest temporary), and rows are shared among the
-// threads. Each row is summed in the same order whatever the thread count, so the bits are too.
+// A multigrid level's matrix, the Galerkin product PᵀAP, a block of coarse rows at a time: only
+// one block's PᵀA is held at once (on a million nodes the whole PᵀA was the hierarchy's largest
+// temporary). A row is summed as Eigen sums it whatever the blocks, so the bits are those of the
+// whole product.
 #include <Eigen/SparseCore>
 
 namespace fabform {
 
+/// Coarse rows a block: its R A is the temporary (about 60 MB on the finest level of a million
+/// nodes, against the whole PᵀA's 0.7 GB). Each block's product also clears a mask as long as
+/// A's rows, so blocks much smaller cost more.
+constexpr Eigen::Index kGalerkinBlockRows = 65536;
+
 /// R A P, with R = Pᵀ given by rows (the cycle keeps it to restrict with); `a` square.
 Eigen::SparseMatrix<double, Eigen::RowMajor> galerkin_product(const Eigen::SparseMatrix<double, Eigen::RowMajor>& restriction,
                                                               const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
-                                                              const Eigen::SparseMatrix<double, Eigen::RowMajor>& prolongation);
+                                                              const Eigen::SparseMatrix<double, Eigen::RowMajor>& prolongation,
+                                                              Eigen::Index block_rows = kGalerkinBlockRows);
 
 }  // namespace fabform

@@ -1,6 +1,6 @@
 // The Galerkin product against Eigen's own products (PᵀA then ·P): the same matrix to rounding,
 // on a fine grid's stiffness and the lattice's bilinear prolongation, and on random sparse
-// factors; the same bits on one thread and on two; shapes that do not chain refused.
+// factors; the same bits in blocks as whole; shapes that do not chain refused.
 #include "linalg/galerkin_product.hpp"
 
 #include <gtest/gtest.h>
@@ -10,7 +10,6 @@
 #include <stdexcept>
 #include <vector>
 
-#include "fabform/thread_count.hpp"
 #include "linalg/lattice_prolongation.hpp"
 #include "support/grid_stiffness.hpp"
 
@@ -57,20 +56,16 @@ TEST(GalerkinProduct, IsTheProductOfRandomSparseFactors) {
   }
 }
 
-TEST(GalerkinProduct, GivesTheSameBitsOnOneThreadAndOnTwo) {
-  // 161 × 161 nodes: 3 · 81 · 81 = 19683 coarse rows, above the parallel loops' threshold.
-  const RowMatrix a = test::symmetric(test::grid_stiffness(161, 0.2));
-  const RowMatrix p = lattice_prolongation({161, 161});
+TEST(GalerkinProduct, GivesTheSameBitsInBlocksAsWhole) {
+  // 41 × 41 nodes: 3 · 21 · 21 = 1323 coarse rows, in blocks of 100 (the last one short).
+  const RowMatrix a = test::symmetric(test::grid_stiffness(41, 0.2));
+  const RowMatrix p = lattice_prolongation({41, 41});
   const RowMatrix r = p.transpose();
-  ASSERT_GE(r.rows(), kMinParallelItems);
-  use_threads(1);
-  const RowMatrix one = galerkin_product(r, a, p);
-  use_threads(2);
-  const RowMatrix two = galerkin_product(r, a, p);
-  use_threads(1);
-  ASSERT_EQ(one.nonZeros(), two.nonZeros());
-  EXPECT_TRUE(std::equal(one.valuePtr(), one.valuePtr() + one.nonZeros(), two.valuePtr()));
-  EXPECT_TRUE(std::equal(one.innerIndexPtr(), one.innerIndexPtr() + one.nonZeros(), two.innerIndexPtr()));
+  const RowMatrix blocks = galerkin_product(r, a, p, 100), whole = galerkin_product(r, a, p);
+  ASSERT_EQ(blocks.nonZeros(), whole.nonZeros());
+  EXPECT_TRUE(std::equal(blocks.valuePtr(), blocks.valuePtr() + blocks.nonZeros(), whole.valuePtr()));
+  EXPECT_TRUE(std::equal(blocks.innerIndexPtr(), blocks.innerIndexPtr() + blocks.nonZeros(), whole.innerIndexPtr()));
+  EXPECT_TRUE(std::equal(blocks.outerIndexPtr(), blocks.outerIndexPtr() + blocks.rows() + 1, whole.outerIndexPtr()));
 }
 
 TEST(GalerkinProduct, RefusesFactorsThatDoNotChain) {
@@ -78,6 +73,7 @@ TEST(GalerkinProduct, RefusesFactorsThatDoNotChain) {
   EXPECT_THROW(galerkin_product(r, random_sparse(6, 5, 2, 4), p), std::invalid_argument);
   EXPECT_THROW(galerkin_product(random_sparse(3, 5, 2, 5), a, p), std::invalid_argument);
   EXPECT_THROW(galerkin_product(random_sparse(2, 6, 2, 6), a, p), std::invalid_argument);
+  EXPECT_THROW(galerkin_product(r, a, p, 0), std::invalid_argument);
 }
 
 }  // namespace
