@@ -15,7 +15,8 @@ namespace {
 // than a smoothing sweep on the finest level.
 constexpr int kCoarsestSide = 24;
 // Sweeps before and after each coarse correction: on the dome at 201 × 201 nodes (newton to
-// 1e-6 N, one thread), 1 took 43 Newton iterations and 9.95 s, 2 took 40 and 11.17 s (one run each).
+// 1e-6 N, one thread), 1 took 43 Newton iterations and 9.95 s, 2 took 40 and 11.17 s (trial
+// builds, one run each).
 constexpr int kSweeps = 1;
 
 // The coarsest matrix made factorisable: 1 on the diagonal of points no finer unknown reaches

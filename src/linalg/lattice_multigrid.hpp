@@ -16,8 +16,8 @@
 #include <Eigen/SparseCore>
 
 #include "linalg/conjugate_gradients.hpp"
-#include "linalg/line_gauss_seidel.hpp"
 #include "linalg/lattice_prolongation.hpp"
+#include "linalg/line_gauss_seidel.hpp"
 
 namespace fabform {
 
