@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The C++ test suite again, built with AddressSanitizer (LeakSanitizer included) and
 # UndefinedBehaviorSanitizer, in build-asan/. tools/test.sh runs it after the normal suite.
-# Every gtest runs here, the CLI tests through the sanitized `fabform`; left to the normal
-# suite are the fuzz targets (built with their own sanitizers, tools/fuzz.sh), the Python
-# tools' tests, which run build/fabform, and the million-node extremes (minutes each under the
-# sanitizers, on code the smaller grids run too). The first report ends the process and fails
+# The gtests run here, the CLI tests through the sanitized `fabform`; left to the normal suite
+# are the fuzz targets (built with their own sanitizers, tools/fuzz.sh), the Python tools'
+# tests, which run build/fabform, and the slow tests listed below (minutes each under the
+# sanitizers, on code smaller tests here run too). The first report ends the process and fails
 # its test. Only the test binary and the CLI it runs are built.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."

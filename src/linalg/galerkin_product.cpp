@@ -40,7 +40,7 @@ RowMatrix galerkin_product(const RowMatrix& restriction, const RowMatrix& a, con
     throw std::invalid_argument("galerkin_product: R, A and P do not chain");
   if (block_rows < 1) throw std::invalid_argument("galerkin_product: blocks of no rows");
   const Eigen::Index rows = restriction.rows();
-  const auto count = static_cast<int>((rows + block_rows - 1) / block_rows);
+  const auto count = static_cast<int>(rows == 0 ? 0 : (rows - 1) / block_rows + 1);
   std::vector<RowMatrix> blocks(static_cast<std::size_t>(count));
   // On one thread: on two, the blocks' products (each allocating its temporaries afresh) took
   // the dome at N = 1001 from 181 s to 216 s.

@@ -9,7 +9,8 @@ namespace fabform {
 
 /// Coarse rows a block: its R A is the temporary (about 60 MB on the finest level of a million
 /// nodes, against the whole PᵀA's 0.7 GB). Each block's product also clears a mask as long as
-/// A's rows, so blocks much smaller cost more.
+/// A's rows, so blocks much smaller cost more. The blocks' products are held until they are
+/// stacked, so the coarse matrix is held twice for a moment.
 constexpr Eigen::Index kGalerkinBlockRows = 65536;
 
 /// R A P, with R = Pᵀ given by rows (the cycle keeps it to restrict with); `a` square.

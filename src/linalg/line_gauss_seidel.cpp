@@ -1,6 +1,7 @@
 #include "linalg/line_gauss_seidel.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <stdexcept>
 #include <utility>
 
@@ -46,47 +47,58 @@ LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::v
   for (std::size_t l = 0; l < lines.size(); ++l)
     for (const int u : lines[l].unknowns) line_of[static_cast<std::size_t>(u)] = static_cast<int>(l);
   const double shift = kShift * mean_diagonal(a);
-  bool failed = false;
-  // Lines are factorised on every thread: each writes only its own unknowns' positions.
+  // Lines are factorised on every thread: each writes only its own unknowns' positions. An
+  // exception must not leave the parallel loop; one is rethrown after it.
+  std::exception_ptr failure;
 #pragma omp parallel for schedule(dynamic, 8) if (place.size() >= static_cast<std::size_t>(kMinParallelItems))
   for (std::size_t l = 0; l < lines.size(); ++l) {
-    Line& line = lines[l];
-    std::stable_sort(line.unknowns.begin(), line.unknowns.end(), [&](int s, int t) {
-      return place[static_cast<std::size_t>(s)][static_cast<std::size_t>(along)] <
-             place[static_cast<std::size_t>(t)][static_cast<std::size_t>(along)];
-    });
-    const auto m = static_cast<int>(line.unknowns.size());
-    if (m == 0) continue;
-    for (int k = 0; k < m; ++k) position[static_cast<std::size_t>(line.unknowns[static_cast<std::size_t>(k)])] = k;
-    // The block's lower triangle, column by column: column k is row k's entries right of the
-    // diagonal, a being symmetric.
-    Eigen::SparseMatrix<double> block(m, m);
-    std::vector<std::pair<int, double>> below;
-    for (int k = 0; k < m; ++k) {
-      const int u = line.unknowns[static_cast<std::size_t>(k)];
-      double diagonal = 0.0;
-      below.clear();
-      for (RowMatrix::InnerIterator it(a, u); it; ++it) {
-        const auto c = static_cast<std::size_t>(it.col());
-        if (line_of[c] != static_cast<int>(l)) continue;
-        if (it.col() == u) diagonal = it.value();
-        else if (position[c] > k) below.emplace_back(position[c], it.value());
-      }
-      std::sort(below.begin(), below.end());
-      block.startVec(k);
-      // A point no finer unknown reaches has an empty row: 1 keeps it where it is.
-      block.insertBack(k, k) = (diagonal > 0.0 ? diagonal : 1.0) + shift;
-      for (const auto& [row, value] : below) block.insertBack(row, k) = value;
-    }
-    block.finalize();
-    line.factor = std::make_unique<Factor>(block);
-    if (line.factor->info() != Eigen::Success) {
-#pragma omp atomic write
-      failed = true;
+    try {
+      factorise(a, place, along, line_of, position, static_cast<int>(l), shift, lines[l]);
+    } catch (...) {
+#pragma omp critical(line_gauss_seidel_failure)
+      if (!failure) failure = std::current_exception();
     }
   }
-  if (failed) throw std::runtime_error("LineGaussSeidel: a line's block could not be factorised");
+  if (failure) std::rethrow_exception(failure);
   return lines;
+}
+
+// Sorts line `id`'s unknowns along it and factorises its block of a, shifted.
+void LineGaussSeidel::factorise(const RowMatrix& a, const std::vector<std::array<int, 2>>& place, int along,
+                                const std::vector<int>& line_of, std::vector<int>& position, int id, double shift,
+                                Line& line) {
+  std::stable_sort(line.unknowns.begin(), line.unknowns.end(), [&](int s, int t) {
+    return place[static_cast<std::size_t>(s)][static_cast<std::size_t>(along)] <
+           place[static_cast<std::size_t>(t)][static_cast<std::size_t>(along)];
+  });
+  const auto m = static_cast<int>(line.unknowns.size());
+  if (m == 0) return;
+  for (int k = 0; k < m; ++k) position[static_cast<std::size_t>(line.unknowns[static_cast<std::size_t>(k)])] = k;
+  // The block's lower triangle, column by column: column k is row k's entries right of the
+  // diagonal, a being symmetric.
+  Eigen::SparseMatrix<double> block(m, m);
+  std::vector<std::pair<int, double>> below;
+  for (int k = 0; k < m; ++k) {
+    const int u = line.unknowns[static_cast<std::size_t>(k)];
+    double diagonal = 0.0;
+    below.clear();
+    for (RowMatrix::InnerIterator it(a, u); it; ++it) {
+      const auto c = static_cast<std::size_t>(it.col());
+      if (line_of[c] != id) continue;
+      if (it.col() == u) diagonal = it.value();
+      else if (position[c] > k) below.emplace_back(position[c], it.value());
+    }
+    std::sort(below.begin(), below.end());
+    block.startVec(k);
+    // A point no finer unknown reaches has an empty row, and in the V-cycle no residual (the
+    // restriction's row there is empty too): 1 keeps it where it is.
+    block.insertBack(k, k) = (diagonal > 0.0 ? diagonal : 1.0) + shift;
+    for (const auto& [row, value] : below) block.insertBack(row, k) = value;
+  }
+  block.finalize();
+  line.factor = std::make_unique<Factor>(block);
+  if (line.factor->info() != Eigen::Success)
+    throw std::runtime_error("LineGaussSeidel: a line's block could not be factorised");
 }
 
 // The line's unknowns corrected by its block's solve of their residual:

@@ -38,11 +38,14 @@ class LineGaussSeidel {
   using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>;
   struct Line {
     std::vector<int> unknowns;  // in order along the line
-    std::unique_ptr<Factor> factor;  // of the line's own block of a
+    std::unique_ptr<Factor> factor;  // of the line's block of a, shifted (line_gauss_seidel.cpp)
   };
   using Family = std::vector<Line>;  // the lines of one direction, in order across it
   static Family family(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
                        const std::vector<std::array<int, 2>>& place, int along);
+  static void factorise(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
+                        const std::vector<std::array<int, 2>>& place, int along, const std::vector<int>& line_of,
+                        std::vector<int>& position, int id, double shift, Line& line);
   static void relax(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                     Eigen::VectorXd& x, const Line& line);
   static void pass(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,

@@ -35,7 +35,7 @@ struct NewtonOptions {
   double friction_creep = 1e-2;
   // The linear solve of each step: "cholesky" (exact), "multigrid" (conjugate gradients
   // preconditioned by multigrid, to an inexact Newton tolerance), or "auto": the
-  // factorisation below the size where multigrid is the faster (linalg/linear_solver.hpp).
+  // factorisation below a size, multigrid from it (linalg/linear_solver.hpp says which and why).
   std::string linear_solver = "auto";
   // Whether the run ends with the estimate of its distance from the rest (one more solve);
   // a continuation's coarser grid, whose rest is only a start, goes without.
