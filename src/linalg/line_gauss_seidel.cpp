@@ -31,12 +31,13 @@ LineGaussSeidel::LineGaussSeidel(const RowMatrix& a, const std::vector<std::arra
     throw std::invalid_argument("LineGaussSeidel: a lattice point per unknown of a square matrix is needed");
   for (const std::array<int, 2>& p : place)
     if (p[0] < 0 || p[1] < 0) throw std::invalid_argument("LineGaussSeidel: a negative lattice index");
-  families_[0] = family(a, place, 0);
-  families_[1] = family(a, place, 1);
+  const double shift = kShift * mean_diagonal(a);
+  families_[0] = family(a, place, 0, shift);
+  families_[1] = family(a, place, 1, shift);
 }
 
 LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::vector<std::array<int, 2>>& place,
-                                                int along) {
+                                                int along, double shift) {
   const auto across = static_cast<std::size_t>(1 - along);
   int count = 0;
   for (const std::array<int, 2>& p : place) count = std::max(count, p[across] + 1);
@@ -46,7 +47,6 @@ LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::v
   std::vector<int> line_of(place.size()), position(place.size());
   for (std::size_t l = 0; l < lines.size(); ++l)
     for (const int u : lines[l].unknowns) line_of[static_cast<std::size_t>(u)] = static_cast<int>(l);
-  const double shift = kShift * mean_diagonal(a);
   // Lines are factorised on every thread: each writes only its own unknowns' positions. An
   // exception must not leave the parallel loop; one is rethrown after it.
   std::exception_ptr failure;

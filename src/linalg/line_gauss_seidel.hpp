@@ -42,7 +42,7 @@ class LineGaussSeidel {
   };
   using Family = std::vector<Line>;  // the lines of one direction, in order across it
   static Family family(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
-                       const std::vector<std::array<int, 2>>& place, int along);
+                       const std::vector<std::array<int, 2>>& place, int along, double shift);
   static void factorise(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
                         const std::vector<std::array<int, 2>>& place, int along, const std::vector<int>& line_of,
                         std::vector<int>& position, int id, double shift, Line& line);
