@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
-#include <utility>
 
 #include "linalg/galerkin_product.hpp"
 
@@ -57,22 +56,25 @@ void LatticeMultigrid::set_matrix(const Eigen::SparseMatrix<double>& lower, cons
   if (lower.rows() == 0 || static_cast<Eigen::Index>(unknowns.node.size()) != lower.rows())
     throw std::invalid_argument("LatticeMultigrid: an empty matrix or an unknown's node missing");
   levels_.clear();
+  // Eigen 3.4's sparse matrices have no move constructor or assignment: std::move copies them.
+  // The matrices are handed on by swap, and the levels built in place (a deque never moves its
+  // elements), so no level's matrices are ever held twice.
   RowMatrix a = lower.selfadjointView<Eigen::Lower>();
   RowMatrix p = unknown_prolongation(unknowns);
   std::array<int, 2> size = coarser_lattice(unknowns.lattice_size);
   std::vector<std::array<int, 2>> place = unknown_places(unknowns);
   for (;;) {
-    Level level;
-    level.restriction = p.transpose();
-    RowMatrix coarse = galerkin_product(level.restriction, a, p);
-    level.smoother = LineGaussSeidel(a, place);
+    Level& level = levels_.emplace_back();
+    level.a.swap(a);
+    level.prolongation.swap(p);
+    level.restriction = level.prolongation.transpose();
+    RowMatrix coarse = galerkin_product(level.restriction, level.a, level.prolongation);
+    level.smoother = LineGaussSeidel(level.a, place);
     place = level_places(size, coarse.rows());
-    level.a = std::move(a);
-    level.prolongation = std::move(p);
-    levels_.push_back(std::move(level));
-    a = std::move(coarse);
+    a.swap(coarse);
     if (std::max(size[0], size[1]) <= kCoarsestSide) break;
-    p = lattice_prolongation(size);
+    RowMatrix next = lattice_prolongation(size);
+    p.swap(next);
     size = coarser_lattice(size);
   }
   coarsest_.compute(factorisable(a));

@@ -9,7 +9,7 @@
 // Gauss–Seidel smoothing (line_gauss_seidel.hpp), forward before the coarse correction and
 // backward after, keeps the V-cycle symmetric positive definite, as conjugate gradients require.
 #include <cstddef>
-#include <vector>
+#include <deque>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
@@ -45,7 +45,7 @@ class LatticeMultigrid {
   };
   Eigen::VectorXd cycle(std::size_t level, const Eigen::VectorXd& b) const;
 
-  std::vector<Level> levels_;
+  std::deque<Level> levels_;  // never moved: see set_matrix
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> coarsest_;
 };
 
