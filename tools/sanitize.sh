@@ -39,9 +39,8 @@ SLOW_TESTS+=':*KeepsTheSurfaceAndTheBoundingBox*:*StepDivisorC*:*RunResume.*/Sig
 
 # The rest run inside one process per core, gtest's shards: a process per test, as ctest runs
 # them, spent about 0.55 s starting each sanitized process, and the pass took 27 minutes on CI's
-# two cores against 11 in shards. Each shard's
-# output goes to its log and is printed after; gtest names the test a report interrupted. They
-# run where ctest runs them, in build-asan/tests.
+# two cores against 11 in shards. Each shard's output goes to its log and is printed after;
+# gtest names the test a report interrupted. They run where ctest runs them, in build-asan/tests.
 shards=$(nproc)
 pids=()
 for ((shard = 0; shard < shards; ++shard)); do
