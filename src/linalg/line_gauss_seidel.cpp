@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include <stdexcept>
-#include <utility>
+#include <tuple>
 
 #include "fabform/thread_count.hpp"
 
@@ -74,31 +74,33 @@ void LineGaussSeidel::factorise(const RowMatrix& a, const std::vector<std::array
   const auto m = static_cast<int>(line.unknowns.size());
   if (m == 0) return;
   for (int k = 0; k < m; ++k) position[static_cast<std::size_t>(line.unknowns[static_cast<std::size_t>(k)])] = k;
-  // The block's lower triangle, column by column: column k is row k's entries right of the
-  // diagonal, a being symmetric.
-  Eigen::SparseMatrix<double> block(m, m);
-  std::vector<std::pair<int, double>> below;
+  // The block's lower triangle, row by row (row k's entries left of the diagonal), and its
+  // bandwidth, the farthest of them from the diagonal.
+  std::vector<double> diagonal(static_cast<std::size_t>(m), 0.0);
+  std::vector<std::tuple<int, int, double>> below;
+  int bandwidth = 0;
   for (int k = 0; k < m; ++k) {
     const int u = line.unknowns[static_cast<std::size_t>(k)];
-    double diagonal = 0.0;
-    below.clear();
     for (RowMatrix::InnerIterator it(a, u); it; ++it) {
       const auto c = static_cast<std::size_t>(it.col());
       if (line_of[c] != id) continue;
-      if (it.col() == u) diagonal = it.value();
-      else if (position[c] > k) below.emplace_back(position[c], it.value());
+      if (it.col() == u) {
+        diagonal[static_cast<std::size_t>(k)] = it.value();
+      } else if (position[c] < k) {
+        below.emplace_back(k, position[c], it.value());
+        bandwidth = std::max(bandwidth, k - position[c]);
+      }
     }
-    std::sort(below.begin(), below.end());
-    block.startVec(k);
-    // A point no finer unknown reaches has an empty row, and in the V-cycle no residual (the
-    // restriction's row there is empty too): 1 keeps it where it is.
-    block.insertBack(k, k) = (diagonal > 0.0 ? diagonal : 1.0) + shift;
-    for (const auto& [row, value] : below) block.insertBack(row, k) = value;
   }
-  block.finalize();
-  line.factor = std::make_unique<Factor>(block);
-  if (line.factor->info() != Eigen::Success)
-    throw std::runtime_error("LineGaussSeidel: a line's block could not be factorised");
+  line.factor = BandedLdlt(m, bandwidth);
+  // A point no finer unknown reaches has an empty row, and in the V-cycle no residual (the
+  // restriction's row there is empty too): 1 keeps it where it is.
+  for (int k = 0; k < m; ++k) {
+    const double d = diagonal[static_cast<std::size_t>(k)];
+    line.factor.at(k, k) = (d > 0.0 ? d : 1.0) + shift;
+  }
+  for (const auto& [row, column, value] : below) line.factor.at(row, column) = value;
+  if (!line.factor.factorise()) throw std::runtime_error("LineGaussSeidel: a line's block could not be factorised");
 }
 
 // The line's unknowns corrected by its block's solve of their residual:
@@ -118,8 +120,8 @@ void LineGaussSeidel::relax(const RowMatrix& a, const Eigen::VectorXd& b, Eigen:
     for (int p = row_start[u]; p < row_start[u + 1]; ++p) sum -= value[p] * x[column[p]];
     r[k] = sum;
   }
-  const Eigen::VectorXd correction = line.factor->solve(r);
-  for (Eigen::Index k = 0; k < m; ++k) x[line.unknowns[static_cast<std::size_t>(k)]] += correction[k];
+  line.factor.solve_in_place(r);
+  for (Eigen::Index k = 0; k < m; ++k) x[line.unknowns[static_cast<std::size_t>(k)]] += r[k];
 }
 
 void LineGaussSeidel::pass(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Family& family,

@@ -10,22 +10,18 @@
 // forward sweep before the coarse correction and a backward one after keep the V-cycle
 // symmetric positive definite, as conjugate gradients require.
 #include <array>
-#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+
+#include "linalg/banded_ldlt.hpp"
 
 namespace fabform {
 
 class LineGaussSeidel {
  public:
   LineGaussSeidel() = default;
-  LineGaussSeidel(LineGaussSeidel&&) noexcept = default;
-  LineGaussSeidel& operator=(LineGaussSeidel&&) noexcept = default;
-  LineGaussSeidel(const LineGaussSeidel&) = delete;  // its factors are Eigen's, which cannot be copied
-  LineGaussSeidel& operator=(const LineGaussSeidel&) = delete;
   /// `a` whole and symmetric, positive semidefinite; `place` each unknown's lattice point (i, j).
   LineGaussSeidel(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::array<int, 2>>& place);
 
@@ -35,10 +31,9 @@ class LineGaussSeidel {
              bool forward) const;
 
  private:
-  using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>;
   struct Line {
     std::vector<int> unknowns;  // in order along the line
-    std::unique_ptr<Factor> factor;  // of the line's block of a, shifted (line_gauss_seidel.cpp)
+    BandedLdlt factor;  // of the line's block of a, shifted (line_gauss_seidel.cpp)
   };
   using Family = std::vector<Line>;  // the lines of one direction, in order across it
   static Family family(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
