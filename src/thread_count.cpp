@@ -17,4 +17,6 @@ void use_threads(int n) {
     set(1);
 }
 
+int threads_in_use() { return omp_get_max_threads(); }
+
 }  // namespace fabform

@@ -21,8 +21,8 @@ export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:check_initialization_order=1:
 export LSAN_OPTIONS="suppressions=$PWD/tools/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 # The tests whose process starts MPI: BoomerAMG's own, and those that run it beside the lattice
-# multigrid or in Newton's steps on an arc mesh (gtest filter patterns).
-MPI_TESTS='*AmgConjugateGradient*:*LinearSolver*:*AlgebraicMultigrid*'
+# multigrid or in Newton's steps on an arc mesh (names they contain).
+MPI_TESTS=(AmgConjugateGradient LinearSolver AlgebraicMultigrid)
 # Left to the normal suite, each on code a smaller test here runs too (minutes under the
 # sanitizers, and CI's time is bounded):
 # - the multigrid distance check on the 81 × 81 dome and the stagnating multigrid steps on the
@@ -39,13 +39,15 @@ SLOW_TESTS+=':*KeepsTheSurfaceAndTheBoundingBox*:*StepDivisorC*:*RunResume.*/Sig
 
 # The rest run inside one process per core, gtest's shards: a process per test, as ctest runs
 # them, spent about 0.55 s starting each sanitized process, and the pass took 27 minutes on CI's
-# two cores against 11 in shards. Each shard's output goes to its log and is printed after;
-# gtest names the test a report interrupted. They run where ctest runs them, in build-asan/tests.
+# two cores against 11 in shards. Each shard's output goes to its log and is printed after; its
+# last "[ RUN ]" line names the test a report interrupted. They run where ctest runs them, in
+# build-asan/tests.
+mpi_patterns=$(printf '*%s*:' "${MPI_TESTS[@]}")
 shards=$(nproc)
 pids=()
 for ((shard = 0; shard < shards; ++shard)); do
   (cd build-asan/tests && GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard \
-     exec timeout 3600 ./fabform_tests --gtest_brief=1 --gtest_filter="-$MPI_TESTS:$SLOW_TESTS") \
+     exec timeout 3600 ./fabform_tests --gtest_filter="-$mpi_patterns$SLOW_TESTS") \
     >"build-asan/sanitize-shard-$shard.log" 2>&1 &
   pids+=($!)
 done
@@ -66,4 +68,4 @@ done
 # only make a leak appear, never hide one.
 ASAN_OPTIONS="$ASAN_OPTIONS:fast_unwind_on_malloc=0:intercept_tls_get_addr=0" \
   ctest --test-dir build-asan --output-on-failure -j"$(nproc)" \
-        -R 'AmgConjugateGradient|LinearSolver|AlgebraicMultigrid' -E "^(fuzz|tools|goldens)\\."
+        -R "$(IFS='|'; echo "${MPI_TESTS[*]}")" -E "^(fuzz|tools|goldens)\\."

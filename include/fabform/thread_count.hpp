@@ -13,4 +13,7 @@ constexpr int kMinParallelItems = 8192;
 /// Sets the thread count of the parallel loops (n ≥ 1).
 void use_threads(int n);
 
+/// The thread count the parallel loops use now (OpenMP's default, the cores, until use_threads).
+int threads_in_use();
+
 }  // namespace fabform

@@ -1,9 +1,10 @@
 #pragma once
 // LDLᵀ of a symmetric banded matrix, stored by rows of its lower band: the line smoother's
 // blocks (line_gauss_seidel.hpp) couple each unknown only to those a few places along its line,
-// so their factors fill only the band. Stored densely within it, a factor needs no index arrays,
-// and factorising one allocates once: lines are factorised on every thread, where Eigen's
-// simplicial LDLᵀ spent its time in many small allocations and a copy of the block to permute it.
+// so their factors fill only the band. Stored densely within it, a factor is one array with no
+// index arrays, and factorising it allocates once: lines are factorised on every thread, where
+// Eigen's simplicial LDLᵀ spent its time in many small allocations and a copy of the block to
+// permute it. The band is stored whole, so it suits blocks whose every row reaches about as far.
 #include <vector>
 
 #include <Eigen/Core>

@@ -58,13 +58,15 @@ void LatticeMultigrid::set_matrix(const Eigen::SparseMatrix<double>& lower, cons
   levels_.clear();
   // Eigen 3.4's sparse matrices have no move constructor or assignment: std::move copies them.
   // The matrices are handed on by swap, and the levels built in place (a deque never moves its
-  // elements), so no level's matrices are ever held twice.
+  // elements), so no level's matrices are ever held twice. They are kept only once the
+  // hierarchy is whole, so a failure leaves none.
+  std::deque<Level> levels;
   RowMatrix a = lower.selfadjointView<Eigen::Lower>();
   RowMatrix p = unknown_prolongation(unknowns);
   std::array<int, 2> size = coarser_lattice(unknowns.lattice_size);
   std::vector<std::array<int, 2>> place = unknown_places(unknowns);
   for (;;) {
-    Level& level = levels_.emplace_back();
+    Level& level = levels.emplace_back();
     level.a.swap(a);
     level.prolongation.swap(p);
     level.restriction = level.prolongation.transpose();
@@ -80,6 +82,7 @@ void LatticeMultigrid::set_matrix(const Eigen::SparseMatrix<double>& lower, cons
   coarsest_.compute(factorisable(a));
   if (coarsest_.info() != Eigen::Success)
     throw std::runtime_error("LatticeMultigrid: the coarsest level is not positive definite");
+  levels_.swap(levels);
 }
 
 Eigen::VectorXd LatticeMultigrid::cycle(std::size_t index, const Eigen::VectorXd& b) const {

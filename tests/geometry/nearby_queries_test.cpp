@@ -113,6 +113,7 @@ TEST(ForEachNearby, VisitsEveryPointOnceWithTheSameAnswersOnOneThreadOrTwo) {
   const std::vector<V> points = sheet();
   const int count = static_cast<int>(points.size());
   ASSERT_GE(count, kMinParallelItems);
+  const int before = threads_in_use();
   for (const int threads : {1, 2}) {
     use_threads(threads);
     std::vector<std::atomic<int>> visits(points.size());
@@ -127,7 +128,7 @@ TEST(ForEachNearby, VisitsEveryPointOnceWithTheSameAnswersOnOneThreadOrTwo) {
       if (k % 7 == 0) expect_same_answer(answers[k], bodies[1].closest(points[k]), points[k]);
     }
   }
-  use_threads(1);
+  use_threads(before);  // the tests after this one, in the same process, run as they would alone
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 
@@ -14,15 +14,15 @@
 namespace fabform {
 namespace {
 
-// A random symmetric matrix of the given band, its diagonal `diagonal` plus the row's absolute sum
-// times `dominance` (> 1: positive definite).
+// A random symmetric matrix of the given band, its diagonal the row's absolute sum times
+// `dominance`, plus 1e-3 (dominance ≥ 1: positive definite).
 Eigen::MatrixXd random_band(int n, int bandwidth, double dominance, unsigned seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> entry(-1.0, 1.0);
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
   for (int r = 0; r < n; ++r)
     for (int c = std::max(0, r - bandwidth); c < r; ++c) a(r, c) = a(c, r) = entry(random);
-  for (int r = 0; r < n; ++r) a(r, r) = dominance * a.row(r).cwiseAbs().sum() + (dominance > 0.0 ? 1e-3 : 0.0);
+  for (int r = 0; r < n; ++r) a(r, r) = dominance * a.row(r).cwiseAbs().sum() + 1e-3;
   return a;
 }
 

@@ -25,10 +25,11 @@ Eigen::VectorXd solved_on(int threads, const Eigen::SparseMatrix<double>& lower)
 }
 
 TEST(SparseCholesky, ThreadCountDoesNotChangeABit) {
+  const int before = threads_in_use();
   for (int side : {10, 30}) {  // below and above the split's minimum size
     const Eigen::SparseMatrix<double> lower = test::grid_stiffness(side, 0.01);
     const Eigen::VectorXd one = solved_on(1, lower), two = solved_on(2, lower);
-    use_threads(1);
+    use_threads(before);  // the tests after this one, in the same process, run as they would alone
     EXPECT_TRUE(one == two) << side << " × " << side;
     const Eigen::SparseMatrix<double> a = test::symmetric(lower);
     Eigen::VectorXd b(lower.rows());
