@@ -21,6 +21,10 @@ double& BandedLdlt::at(int row, int column) {
                 static_cast<std::size_t>(column - row + bandwidth_)];
 }
 
+std::size_t BandedLdlt::first_place(int r) const {
+  return static_cast<std::size_t>(std::max(0, bandwidth_ - r));
+}
+
 // Row by row: L(r, c) = (A(r, c) − Σₖ L(r, k) D(k) L(c, k)) / D(c) for c < r, then
 // D(r) = A(r, r) − Σₖ L(r, k)² D(k), k over the columns both rows' bands hold. Row r's place p
 // holds column r − w + p, so column k sits at place k − r + w in row r and k − c + w in row c.
@@ -29,7 +33,7 @@ bool BandedLdlt::factorise() {
   std::vector<double> scaled(w);  // L(r, k) D(k), by row r's places
   for (int r = 0; r < size_; ++r) {
     const std::size_t row = static_cast<std::size_t>(r) * w;
-    const std::size_t first = static_cast<std::size_t>(std::max(0, bandwidth_ - r));
+    const std::size_t first = first_place(r);
     for (std::size_t p = first; p < w; ++p) {
       const std::size_t c = static_cast<std::size_t>(r) - w + p;
       double sum = lower_[row + p];
@@ -52,7 +56,7 @@ void BandedLdlt::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const {
     const std::size_t row = static_cast<std::size_t>(r) * w;
     const Eigen::Index first_column = r - bandwidth_;
     double sum = b[r];
-    for (std::size_t p = static_cast<std::size_t>(std::max(0, bandwidth_ - r)); p < w; ++p)
+    for (std::size_t p = first_place(r); p < w; ++p)
       sum -= lower_[row + p] * b[first_column + static_cast<Eigen::Index>(p)];
     b[r] = sum;
   }
@@ -61,7 +65,7 @@ void BandedLdlt::solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const {
     const std::size_t row = static_cast<std::size_t>(r) * w;
     const Eigen::Index first_column = r - bandwidth_;
     const double x = b[r];
-    for (std::size_t p = static_cast<std::size_t>(std::max(0, bandwidth_ - r)); p < w; ++p)
+    for (std::size_t p = first_place(r); p < w; ++p)
       b[first_column + static_cast<Eigen::Index>(p)] -= lower_[row + p] * x;
   }
 }

@@ -5,6 +5,7 @@
 // index arrays, and factorising it allocates once: lines are factorised on every thread, where
 // Eigen's simplicial LDLᵀ spent its time in many small allocations and a copy of the block to
 // permute it. The band is stored whole, so it suits blocks whose every row reaches about as far.
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
@@ -27,10 +28,12 @@ class BandedLdlt {
   /// Overwrites b with A⁻¹ b; after a successful factorise.
   void solve_in_place(Eigen::Ref<Eigen::VectorXd> b) const;
 
-  int size() const { return size_; }
   int bandwidth() const { return bandwidth_; }
 
  private:
+  // Row r's first place holding a column of the matrix (the top rows' bands start before it).
+  std::size_t first_place(int r) const;
+
   int size_ = 0;
   int bandwidth_ = 0;
   std::vector<double> lower_;  // row r's places r − bandwidth ... r − 1, then D in diagonal_
