@@ -1,6 +1,7 @@
 // The Galerkin product against Eigen's own products (PᵀA then ·P): the same matrix to rounding,
 // on a fine grid's stiffness and the lattice's bilinear prolongation, and on random sparse
-// factors; in blocks, the whole product's bits; shapes that do not chain refused.
+// factors; the same bits in any blocks on any threads; each row's columns in order; shapes that
+// do not chain refused.
 #include "linalg/galerkin_product.hpp"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "fabform/thread_count.hpp"
 #include "linalg/lattice_prolongation.hpp"
 #include "support/grid_stiffness.hpp"
 
@@ -55,17 +57,41 @@ TEST(GalerkinProduct, IsTheProductOfRandomSparseFactors) {
   }
 }
 
-TEST(GalerkinProduct, GivesTheBitsOfTheWholeProductInBlocks) {
-  // 41 × 41 nodes: 3 · 21 · 21 = 1323 coarse rows, in blocks of 100 (the last one short),
-  // against Eigen's products of the whole matrices.
-  const RowMatrix a = test::symmetric(test::grid_stiffness(41, 0.2));
-  const RowMatrix p = lattice_prolongation({41, 41});
-  const RowMatrix r = p.transpose();
-  const RowMatrix blocks = galerkin_product(r, a, p, 100), whole = RowMatrix(r * a) * p;
-  ASSERT_EQ(blocks.nonZeros(), whole.nonZeros());
-  EXPECT_TRUE(std::equal(blocks.valuePtr(), blocks.valuePtr() + blocks.nonZeros(), whole.valuePtr()));
-  EXPECT_TRUE(std::equal(blocks.innerIndexPtr(), blocks.innerIndexPtr() + blocks.nonZeros(), whole.innerIndexPtr()));
-  EXPECT_TRUE(std::equal(blocks.outerIndexPtr(), blocks.outerIndexPtr() + blocks.rows() + 1, whole.outerIndexPtr()));
+bool same_bits(const RowMatrix& x, const RowMatrix& y) {
+  return x.rows() == y.rows() && x.cols() == y.cols() && x.nonZeros() == y.nonZeros() &&
+         std::equal(x.valuePtr(), x.valuePtr() + x.nonZeros(), y.valuePtr()) &&
+         std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr()) &&
+         std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.rows() + 1, y.outerIndexPtr());
+}
+
+TEST(GalerkinProduct, GivesTheSameBitsWhateverTheBlocksAndThreads) {
+  // 81 × 81 nodes: 3 · 41 · 41 = 5043 coarse rows, in one block, in blocks of 100 (the last one
+  // short) and of 1, on one thread and on two (the loop runs on every thread from 8192 rows:
+  // 129 × 129 nodes, 3 · 65 · 65 = 12675 coarse rows).
+  const int saved = threads_in_use();
+  for (const int side : {81, 129}) {
+    const RowMatrix a = test::symmetric(test::grid_stiffness(side, 0.2));
+    const RowMatrix p = lattice_prolongation({side, side});
+    const RowMatrix r = p.transpose();
+    use_threads(1);
+    const RowMatrix whole = galerkin_product(r, a, p, r.rows());
+    EXPECT_TRUE(same_bits(galerkin_product(r, a, p, 100), whole)) << side;
+    EXPECT_TRUE(same_bits(galerkin_product(r, a, p, 1), whole)) << side;
+    use_threads(2);
+    EXPECT_TRUE(same_bits(galerkin_product(r, a, p, 100), whole)) << side;
+    EXPECT_TRUE(same_bits(galerkin_product(r, a, p), whole)) << side;
+  }
+  use_threads(saved);
+}
+
+TEST(GalerkinProduct, ListsEachRowsColumnsInIncreasingOrder) {
+  // Eigen's look-ups (coeff, coeffRef) search a row's columns by bisection.
+  const RowMatrix a = random_sparse(200, 200, 7, 3), p = random_sparse(200, 50, 4, 4), r = random_sparse(50, 200, 9, 5);
+  const RowMatrix c = galerkin_product(r, a, p, 7);
+  for (Eigen::Index row = 0; row < c.rows(); ++row)
+    EXPECT_TRUE(std::is_sorted(c.innerIndexPtr() + c.outerIndexPtr()[row], c.innerIndexPtr() + c.outerIndexPtr()[row + 1]))
+        << row;
+  expect_product(r, a, p, 1e-14);
 }
 
 TEST(GalerkinProduct, RefusesFactorsThatDoNotChain) {
