@@ -1,6 +1,7 @@
 #include "linalg/line_gauss_seidel.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <stdexcept>
 #include <tuple>
@@ -41,10 +42,12 @@ LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::v
   const auto across = static_cast<std::size_t>(1 - along);
   int count = 0;
   for (const std::array<int, 2>& p : place) count = std::max(count, p[across] + 1);
-  Family lines(static_cast<std::size_t>(count));
+  Family family;
+  std::vector<Line>& lines = family.lines;
+  lines.resize(static_cast<std::size_t>(count));
   for (std::size_t u = 0; u < place.size(); ++u)
     lines[static_cast<std::size_t>(place[u][across])].unknowns.push_back(static_cast<int>(u));
-  std::vector<int> line_of(place.size()), position(place.size());
+  std::vector<int> line_of(place.size()), position(place.size()), reach(lines.size(), 0);
   for (std::size_t l = 0; l < lines.size(); ++l)
     for (const int u : lines[l].unknowns) line_of[static_cast<std::size_t>(u)] = static_cast<int>(l);
   // Lines are factorised on every thread: each writes only its own unknowns' positions. An
@@ -53,18 +56,37 @@ LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::v
 #pragma omp parallel for schedule(dynamic, 8) if (place.size() >= static_cast<std::size_t>(kMinParallelItems))
   for (std::size_t l = 0; l < lines.size(); ++l) {
     try {
-      factorise(a, place, along, line_of, position, static_cast<int>(l), shift, lines[l]);
+      reach[l] = factorise(a, place, along, line_of, position, static_cast<int>(l), shift, lines[l]);
     } catch (...) {
 #pragma omp critical(line_gauss_seidel_failure)
       if (!failure) failure = std::current_exception();
     }
   }
   if (failure) std::rethrow_exception(failure);
-  return lines;
+  split(family, *std::max_element(reach.begin(), reach.end()));
+  return family;
 }
 
-// Sorts line `id`'s unknowns along it and factorises its block of a, shifted.
-void LineGaussSeidel::factorise(const RowMatrix& a, const std::vector<std::array<int, 2>>& place, int along,
+// The seam: after the first half of the unknowns, the lines `reach` (the farthest any line's
+// couplings go across the lines) after it, so that no line before the seam couples to one after
+// it. A small level, or one of too few lines, keeps one run.
+void LineGaussSeidel::split(Family& family, int reach) {
+  const std::vector<Line>& lines = family.lines;
+  family.seam = family.seam_end = lines.size();
+  std::size_t unknowns = 0;
+  for (const Line& line : lines) unknowns += line.unknowns.size();
+  if (unknowns < static_cast<std::size_t>(kMinParallelItems)) return;
+  std::size_t seam = 0, first_half = 0;
+  while (seam < lines.size() && 2 * first_half < unknowns) first_half += lines[seam++].unknowns.size();
+  const std::size_t seam_end = seam + static_cast<std::size_t>(reach);
+  if (seam_end >= lines.size()) return;
+  family.seam = seam;
+  family.seam_end = seam_end;
+}
+
+// Sorts line `id`'s unknowns along it and factorises its block of a, shifted. Returns how many
+// lines across its unknowns' couplings reach.
+int LineGaussSeidel::factorise(const RowMatrix& a, const std::vector<std::array<int, 2>>& place, int along,
                                 const std::vector<int>& line_of, std::vector<int>& position, int id, double shift,
                                 Line& line) {
   std::stable_sort(line.unknowns.begin(), line.unknowns.end(), [&](int s, int t) {
@@ -72,17 +94,18 @@ void LineGaussSeidel::factorise(const RowMatrix& a, const std::vector<std::array
            place[static_cast<std::size_t>(t)][static_cast<std::size_t>(along)];
   });
   const auto m = static_cast<int>(line.unknowns.size());
-  if (m == 0) return;
+  if (m == 0) return 0;
   for (int k = 0; k < m; ++k) position[static_cast<std::size_t>(line.unknowns[static_cast<std::size_t>(k)])] = k;
   // The block's lower triangle, row by row (row k's entries left of the diagonal), and its
   // bandwidth, the farthest of them from the diagonal.
   std::vector<double> diagonal(static_cast<std::size_t>(m), 0.0);
   std::vector<std::tuple<int, int, double>> below;
-  int bandwidth = 0;
+  int bandwidth = 0, reach = 0;
   for (int k = 0; k < m; ++k) {
     const int u = line.unknowns[static_cast<std::size_t>(k)];
     for (RowMatrix::InnerIterator it(a, u); it; ++it) {
       const auto c = static_cast<std::size_t>(it.col());
+      reach = std::max(reach, std::abs(line_of[c] - id));
       if (line_of[c] != id) continue;
       if (it.col() == u) {
         diagonal[static_cast<std::size_t>(k)] = it.value();
@@ -101,6 +124,7 @@ void LineGaussSeidel::factorise(const RowMatrix& a, const std::vector<std::array
   }
   for (const auto& [row, column, value] : below) line.factor.at(row, column) = value;
   if (!line.factor.factorise()) throw std::runtime_error("LineGaussSeidel: a line's block could not be factorised");
+  return reach;
 }
 
 // The line's unknowns corrected by its block's solve of their residual:
@@ -124,12 +148,28 @@ void LineGaussSeidel::relax(const RowMatrix& a, const Eigen::VectorXd& b, Eigen:
   for (Eigen::Index k = 0; k < m; ++k) x[line.unknowns[static_cast<std::size_t>(k)]] += r[k];
 }
 
+void LineGaussSeidel::run(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Family& family,
+                          std::size_t begin, std::size_t end, bool forward) {
+  if (forward)
+    for (std::size_t l = begin; l < end; ++l) relax(a, b, x, family.lines[l]);
+  else
+    for (std::size_t l = end; l-- > begin;) relax(a, b, x, family.lines[l]);
+}
+
+// Forward: both halves, then the seam; backward, the reverse. The halves neither read nor write
+// each other's unknowns (the seam's they only read), so they run at once.
 void LineGaussSeidel::pass(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Family& family,
                            bool forward) {
-  if (forward)
-    for (const Line& line : family) relax(a, b, x, line);
-  else
-    for (auto line = family.rbegin(); line != family.rend(); ++line) relax(a, b, x, *line);
+  const std::size_t end = family.lines.size();
+  if (!forward) run(a, b, x, family, family.seam, family.seam_end, false);
+#pragma omp parallel for schedule(static, 1) if (family.seam_end < end)
+  for (int half = 0; half < 2; ++half) {
+    if (half == 0)
+      run(a, b, x, family, 0, family.seam, forward);
+    else
+      run(a, b, x, family, family.seam_end, end, forward);
+  }
+  if (forward) run(a, b, x, family, family.seam, family.seam_end, true);
 }
 
 void LineGaussSeidel::sweep(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool forward) const {

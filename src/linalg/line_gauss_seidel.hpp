@@ -9,7 +9,14 @@
 // Schüller, Multigrid, §5.1). Reversing the order of the lines gives the adjoint sweep, so a
 // forward sweep before the coarse correction and a backward one after keep the V-cycle
 // symmetric positive definite, as conjugate gradients require.
+//
+// Gauss–Seidel is serial along its order, but any order of the lines is a Gauss–Seidel sweep.
+// On a large level each direction's lines are taken in three runs: the first half, the second
+// half but for the lines next to the first, and those last. The two halves share no coupling,
+// so they are relaxed on two threads at once; the sweep is the same in any thread count, to the
+// bit, and the backward sweep is still the forward one's exact reverse.
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
@@ -35,14 +42,23 @@ class LineGaussSeidel {
     std::vector<int> unknowns;  // in order along the line
     BandedLdlt factor;  // of the line's block of a, shifted (line_gauss_seidel.cpp)
   };
-  using Family = std::vector<Line>;  // the lines of one direction, in order across it
+  // The lines of one direction, in order across it. Forward, lines [0, seam) and
+  // [seam_end, end) are relaxed at once, then [seam, seam_end): the lines the second half's
+  // first lines couple to (seam = seam_end = end where the level is small).
+  struct Family {
+    std::vector<Line> lines;
+    std::size_t seam = 0, seam_end = 0;
+  };
   static Family family(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
                        const std::vector<std::array<int, 2>>& place, int along, double shift);
-  static void factorise(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
-                        const std::vector<std::array<int, 2>>& place, int along, const std::vector<int>& line_of,
-                        std::vector<int>& position, int id, double shift, Line& line);
+  static void split(Family& family, int reach);
+  static int factorise(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
+                       const std::vector<std::array<int, 2>>& place, int along, const std::vector<int>& line_of,
+                       std::vector<int>& position, int id, double shift, Line& line);
   static void relax(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                     Eigen::VectorXd& x, const Line& line);
+  static void run(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
+                  Eigen::VectorXd& x, const Family& family, std::size_t begin, std::size_t end, bool forward);
   static void pass(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                    Eigen::VectorXd& x, const Family& family, bool forward);
 

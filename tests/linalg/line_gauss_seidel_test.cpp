@@ -1,7 +1,9 @@
 // Line Gauss–Seidel against what a line smoother must be: a matrix whose couplings all run along
 // one lattice direction is solved exactly by one sweep, whichever the direction; a forward sweep
 // and a backward one, from zero, are a symmetric positive operator; sweeps converge to the
-// direct solution (Eigen's LDLT); a lattice point with no stiffness and no load stays put.
+// direct solution (Eigen's LDLT); a level large enough to be swept in two halves at once is all
+// of these too, with the same bits on any thread count; a lattice point with no stiffness and no
+// load stays put.
 #include "linalg/line_gauss_seidel.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include "fabform/thread_count.hpp"
 #include "support/grid_stiffness.hpp"
 
 namespace fabform {
@@ -87,6 +90,44 @@ TEST(LineGaussSeidel, SweepsConvergeToTheDirectSolution) {
   for (int k = 0; k < 100; ++k) s.sweep(rows, b, x, k % 2 == 0);
   // The fixed point is the solution of the shifted lines' splitting, which is a's own.
   EXPECT_LE((x - exact).norm(), 1e-9 * exact.norm());
+}
+
+// A level large enough to be swept in two halves and a seam (3 · 60 · 60 = 10800 unknowns), with
+// couplings one line across (the grid's springs) and two (its square's, shifted to converge in
+// as few sweeps).
+std::vector<RowMatrix> large_levels() {
+  const RowMatrix a = test::symmetric(test::grid_stiffness(60, 0.5));
+  RowMatrix identity(a.rows(), a.cols());
+  identity.setIdentity();
+  return {a, RowMatrix(a * a) + 4.0 * identity};
+}
+
+TEST(LineGaussSeidel, ALargeLevelSweptInHalvesIsSymmetricPositiveAndConverges) {
+  for (const RowMatrix& a : large_levels()) {
+    const LineGaussSeidel s(a, grid_places(60));
+    const Eigen::VectorXd u = load(a.rows()), v = Eigen::VectorXd::LinSpaced(a.rows(), -1.0, 2.0);
+    const double uv = u.dot(symmetric_sweep(s, a, v)), vu = v.dot(symmetric_sweep(s, a, u));
+    EXPECT_NEAR(uv, vu, 1e-12 * (std::abs(uv) + std::abs(vu)));
+    EXPECT_GT(u.dot(symmetric_sweep(s, a, u)), 0.0);
+    const Eigen::VectorXd exact = direct_solution(Eigen::SparseMatrix<double>(a), u);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(u.size());
+    for (int k = 0; k < 200; ++k) s.sweep(a, u, x, k % 2 == 0);
+    EXPECT_LE((x - exact).norm(), 1e-9 * exact.norm());
+  }
+}
+
+TEST(LineGaussSeidel, ALargeLevelGivesTheSameBitsOnOneThreadAndTwo) {
+  const int saved = threads_in_use();
+  for (const RowMatrix& a : large_levels()) {
+    const LineGaussSeidel s(a, grid_places(60));
+    const Eigen::VectorXd b = load(a.rows());
+    use_threads(1);
+    const Eigen::VectorXd one = symmetric_sweep(s, a, b);
+    use_threads(2);
+    const Eigen::VectorXd two = symmetric_sweep(s, a, b);
+    EXPECT_TRUE(one == two);
+  }
+  use_threads(saved);
 }
 
 TEST(LineGaussSeidel, APointWithNoStiffnessAndNoLoadStaysPut) {
