@@ -1,7 +1,9 @@
 #include "linalg/galerkin_product.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -27,9 +29,9 @@ struct SparseAccumulator {
   void add(int column, double v) {
     const auto c = static_cast<std::size_t>(column);
     if (!present[c]) {
+      columns.push_back(column);  // first: a failed push leaves the accumulator as it was
       present[c] = 1;
       value[c] = v;
-      columns.push_back(column);
     } else {
       value[c] += v;
     }
@@ -73,15 +75,17 @@ void product_row(const RowMatrix& r, const RowMatrix& a, const RowMatrix& p, Eig
 RowMatrix stacked(const std::vector<RowBlock>& blocks, Eigen::Index rows, Eigen::Index columns) {
   Eigen::Index entries = 0;
   for (const RowBlock& b : blocks) entries += static_cast<Eigen::Index>(b.value.size());
+  if (entries > std::numeric_limits<int>::max())
+    throw std::length_error("galerkin_product: more entries than Eigen's int indices hold");
   RowMatrix out(rows, columns);
   out.resizeNonZeros(entries);
   Eigen::Index row = 0, at = 0;
   for (const RowBlock& b : blocks) {
+    const Eigen::Index first = at;
     for (const int size : b.row_size) {
       out.outerIndexPtr()[row++] = static_cast<int>(at);
       at += size;
     }
-    const Eigen::Index first = out.outerIndexPtr()[row - static_cast<Eigen::Index>(b.row_size.size())];
     std::copy(b.column.begin(), b.column.end(), out.innerIndexPtr() + first);
     std::copy(b.value.begin(), b.value.end(), out.valuePtr() + first);
   }
@@ -100,16 +104,20 @@ RowMatrix galerkin_product(const RowMatrix& restriction, const RowMatrix& a, con
   const Eigen::Index rows = restriction.rows();
   const auto count = static_cast<int>(rows == 0 ? 0 : (rows - 1) / block_rows + 1);
   std::vector<RowBlock> blocks(static_cast<std::size_t>(count));
-  // Each thread sums into its own accumulators, made before the loop so that no allocation can
-  // fail inside it but a row's, which is caught there: an exception must not leave the loop.
+  // Each thread sums into its own accumulators (each as long as A's rows), made before the loop
+  // so that no allocation can fail inside it but a row's, which is caught there: an exception
+  // must not leave the loop. After one, the blocks left are skipped.
+  const int threads = rows >= kMinParallelItems ? std::max(1, std::min(threads_in_use(), count)) : 1;
   std::vector<SparseAccumulator> fine, coarse;
-  for (int t = 0; t < threads_in_use(); ++t) {
+  for (int t = 0; t < threads; ++t) {
     fine.emplace_back(a.cols());
     coarse.emplace_back(prolongation.cols());
   }
   std::exception_ptr failure;
-#pragma omp parallel for schedule(dynamic, 1) if (rows >= kMinParallelItems)
+  std::atomic<bool> failed{false};
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int k = 0; k < count; ++k) {
+    if (failed.load(std::memory_order_relaxed)) continue;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     const Eigen::Index first = k * block_rows, end = std::min(rows, first + block_rows);
     try {
@@ -119,6 +127,7 @@ RowMatrix galerkin_product(const RowMatrix& restriction, const RowMatrix& a, con
     } catch (...) {
 #pragma omp critical(galerkin_product_failure)
       if (!failure) failure = std::current_exception();
+      failed = true;
     }
   }
   if (failure) std::rethrow_exception(failure);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <exception>
+#include <numeric>
 #include <stdexcept>
 #include <tuple>
 
@@ -32,6 +33,8 @@ LineGaussSeidel::LineGaussSeidel(const RowMatrix& a, const std::vector<std::arra
     throw std::invalid_argument("LineGaussSeidel: a lattice point per unknown of a square matrix is needed");
   for (const std::array<int, 2>& p : place)
     if (p[0] < 0 || p[1] < 0) throw std::invalid_argument("LineGaussSeidel: a negative lattice index");
+  rows_ = a.rows();
+  nonzeros_ = a.nonZeros();
   const double shift = kShift * mean_diagonal(a);
   families_[0] = family(a, place, 0, shift);
   families_[1] = family(a, place, 1, shift);
@@ -42,8 +45,8 @@ LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::v
   const auto across = static_cast<std::size_t>(1 - along);
   int count = 0;
   for (const std::array<int, 2>& p : place) count = std::max(count, p[across] + 1);
-  Family family;
-  std::vector<Line>& lines = family.lines;
+  Family out;
+  std::vector<Line>& lines = out.lines;
   lines.resize(static_cast<std::size_t>(count));
   for (std::size_t u = 0; u < place.size(); ++u)
     lines[static_cast<std::size_t>(place[u][across])].unknowns.push_back(static_cast<int>(u));
@@ -63,8 +66,8 @@ LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::v
     }
   }
   if (failure) std::rethrow_exception(failure);
-  split(family, *std::max_element(reach.begin(), reach.end()));
-  return family;
+  split(out, std::accumulate(reach.begin(), reach.end(), 0, [](int m, int r) { return std::max(m, r); }));
+  return out;
 }
 
 // The seam: after the first half of the unknowns, the lines `reach` (the farthest any line's
@@ -148,8 +151,8 @@ void LineGaussSeidel::relax(const RowMatrix& a, const Eigen::VectorXd& b, Eigen:
   for (Eigen::Index k = 0; k < m; ++k) x[line.unknowns[static_cast<std::size_t>(k)]] += r[k];
 }
 
-void LineGaussSeidel::run(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Family& family,
-                          std::size_t begin, std::size_t end, bool forward) {
+void LineGaussSeidel::relax_lines(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                  const Family& family, std::size_t begin, std::size_t end, bool forward) {
   if (forward)
     for (std::size_t l = begin; l < end; ++l) relax(a, b, x, family.lines[l]);
   else
@@ -157,22 +160,33 @@ void LineGaussSeidel::run(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::V
 }
 
 // Forward: both halves, then the seam; backward, the reverse. The halves neither read nor write
-// each other's unknowns (the seam's they only read), so they run at once.
+// each other's unknowns (the seam's they only read), so they run at once, on two threads. An
+// exception must not leave the parallel loop; one is rethrown after it.
 void LineGaussSeidel::pass(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Family& family,
                            bool forward) {
   const std::size_t end = family.lines.size();
-  if (!forward) run(a, b, x, family, family.seam, family.seam_end, false);
-#pragma omp parallel for schedule(static, 1) if (family.seam_end < end)
+  if (!forward) relax_lines(a, b, x, family, family.seam, family.seam_end, false);
+  std::exception_ptr failure;
+#pragma omp parallel for schedule(static, 1) num_threads(2) if (family.seam_end < end)
   for (int half = 0; half < 2; ++half) {
-    if (half == 0)
-      run(a, b, x, family, 0, family.seam, forward);
-    else
-      run(a, b, x, family, family.seam_end, end, forward);
+    try {
+      if (half == 0)
+        relax_lines(a, b, x, family, 0, family.seam, forward);
+      else
+        relax_lines(a, b, x, family, family.seam_end, end, forward);
+    } catch (...) {
+#pragma omp critical(line_gauss_seidel_failure)
+      if (!failure) failure = std::current_exception();
+    }
   }
-  if (forward) run(a, b, x, family, family.seam, family.seam_end, true);
+  if (failure) std::rethrow_exception(failure);
+  if (forward) relax_lines(a, b, x, family, family.seam, family.seam_end, true);
 }
 
 void LineGaussSeidel::sweep(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool forward) const {
+  // The halves' independence rests on the couplings of the matrix the lines were made from.
+  if (a.rows() != rows_ || a.nonZeros() != nonzeros_)
+    throw std::invalid_argument("LineGaussSeidel::sweep: not the matrix the lines were made from");
   if (forward) {
     pass(a, b, x, families_[0], true);
     pass(a, b, x, families_[1], true);

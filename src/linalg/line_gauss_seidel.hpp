@@ -33,7 +33,7 @@ class LineGaussSeidel {
   LineGaussSeidel(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const std::vector<std::array<int, 2>>& place);
 
   /// One sweep on a x = b, updating x: the lines along i then along j (forward), or the same
-  /// lines in the reverse order (backward).
+  /// lines in the reverse order (backward). `a` the matrix the smoother was made from.
   void sweep(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b, Eigen::VectorXd& x,
              bool forward) const;
 
@@ -43,8 +43,9 @@ class LineGaussSeidel {
     BandedLdlt factor;  // of the line's block of a, shifted (line_gauss_seidel.cpp)
   };
   // The lines of one direction, in order across it. Forward, lines [0, seam) and
-  // [seam_end, end) are relaxed at once, then [seam, seam_end): the lines the second half's
-  // first lines couple to (seam = seam_end = end where the level is small).
+  // [seam_end, end) are relaxed at once, then [seam, seam_end): the lines either half's lines
+  // next to it couple to, so that the halves share none (seam = seam_end = end where the level
+  // is small or has too few lines).
   struct Family {
     std::vector<Line> lines;
     std::size_t seam = 0, seam_end = 0;
@@ -57,12 +58,14 @@ class LineGaussSeidel {
                        std::vector<int>& position, int id, double shift, Line& line);
   static void relax(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                     Eigen::VectorXd& x, const Line& line);
-  static void run(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
-                  Eigen::VectorXd& x, const Family& family, std::size_t begin, std::size_t end, bool forward);
+  static void relax_lines(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
+                          Eigen::VectorXd& x, const Family& family, std::size_t begin, std::size_t end,
+                          bool forward);
   static void pass(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
                    Eigen::VectorXd& x, const Family& family, bool forward);
 
   std::array<Family, 2> families_;  // lines along i, lines along j
+  Eigen::Index rows_ = 0, nonzeros_ = 0;  // of the matrix they were made from
 };
 
 }  // namespace fabform

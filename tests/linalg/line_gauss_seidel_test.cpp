@@ -96,6 +96,7 @@ TEST(LineGaussSeidel, SweepsConvergeToTheDirectSolution) {
 // couplings one line across (the grid's springs) and two (its square's, shifted to converge in
 // as few sweeps).
 std::vector<RowMatrix> large_levels() {
+  static_assert(3 * 60 * 60 >= kMinParallelItems, "a level the sweep splits");
   const RowMatrix a = test::symmetric(test::grid_stiffness(60, 0.5));
   RowMatrix identity(a.rows(), a.cols());
   identity.setIdentity();
@@ -144,6 +145,22 @@ TEST(LineGaussSeidel, APointWithNoStiffnessAndNoLoadStaysPut) {
   for (int k = 0; k < 4; ++k) s.sweep(a, b, x, k % 2 == 0);
   EXPECT_TRUE(x.segment<3>(still).isZero(0.0));
   EXPECT_TRUE(x.allFinite());
+}
+
+TEST(LineGaussSeidel, AnEmptyLevelSweepsToNothing) {
+  const RowMatrix a(0, 0);
+  const LineGaussSeidel s(a, {});
+  Eigen::VectorXd x(0);
+  s.sweep(a, Eigen::VectorXd(0), x, true);
+  EXPECT_EQ(x.size(), 0);
+}
+
+TEST(LineGaussSeidel, RefusesToSweepAnotherMatrix) {
+  // Its lines' seams were placed by the couplings of the matrix it was made from.
+  const RowMatrix a = test::symmetric(test::grid_stiffness(5, 0.1)), wider = RowMatrix(a * a);
+  const LineGaussSeidel s(a, grid_places(5));
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(a.rows());
+  EXPECT_THROW(s.sweep(wider, load(a.rows()), x, true), std::invalid_argument);
 }
 
 TEST(LineGaussSeidel, RefusesPlacesThatDoNotFit) {
