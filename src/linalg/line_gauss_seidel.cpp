@@ -160,14 +160,15 @@ void LineGaussSeidel::relax_lines(const RowMatrix& a, const Eigen::VectorXd& b, 
 }
 
 // Forward: both halves, then the seam; backward, the reverse. The halves neither read nor write
-// each other's unknowns (the seam's they only read), so they run at once, on two threads. An
-// exception must not leave the parallel loop; one is rethrown after it.
+// each other's unknowns (the seam's they only read), so they run at once, on two threads where
+// the run has them. An exception must not leave the parallel loop; one is rethrown after it.
 void LineGaussSeidel::pass(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Family& family,
                            bool forward) {
   const std::size_t end = family.lines.size();
   if (!forward) relax_lines(a, b, x, family, family.seam, family.seam_end, false);
   std::exception_ptr failure;
-#pragma omp parallel for schedule(static, 1) num_threads(2) if (family.seam_end < end)
+  const int threads = std::min(2, threads_in_use());  // no more than the run asked for
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (family.seam_end < end)
   for (int half = 0; half < 2; ++half) {
     try {
       if (half == 0)
