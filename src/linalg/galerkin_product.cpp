@@ -1,8 +1,6 @@
 #include "linalg/galerkin_product.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -10,6 +8,7 @@
 #include <omp.h>
 
 #include "fabform/thread_count.hpp"
+#include "linalg/parallel_failure.hpp"
 
 namespace fabform {
 
@@ -105,19 +104,18 @@ RowMatrix galerkin_product(const RowMatrix& restriction, const RowMatrix& a, con
   const auto count = static_cast<int>(rows == 0 ? 0 : (rows - 1) / block_rows + 1);
   std::vector<RowBlock> blocks(static_cast<std::size_t>(count));
   // Each thread sums into its own accumulators (each as long as A's rows), made before the loop
-  // so that no allocation can fail inside it but a row's, which is caught there: an exception
-  // must not leave the loop. After one, the blocks left are skipped.
+  // so that no allocation can fail inside it but a row's, which is caught there. After one, the
+  // blocks left are skipped.
   const int threads = rows >= kMinParallelItems ? std::max(1, std::min(threads_in_use(), count)) : 1;
   std::vector<SparseAccumulator> fine, coarse;
   for (int t = 0; t < threads; ++t) {
     fine.emplace_back(a.cols());
     coarse.emplace_back(prolongation.cols());
   }
-  std::exception_ptr failure;
-  std::atomic<bool> failed{false};
+  ParallelFailure failure;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int k = 0; k < count; ++k) {
-    if (failed.load(std::memory_order_relaxed)) continue;
+    if (failure.caught()) continue;
     const auto t = static_cast<std::size_t>(omp_get_thread_num());
     const Eigen::Index first = k * block_rows, end = std::min(rows, first + block_rows);
     try {
@@ -125,12 +123,10 @@ RowMatrix galerkin_product(const RowMatrix& restriction, const RowMatrix& a, con
       for (Eigen::Index row = first; row < end; ++row)
         product_row(restriction, a, prolongation, row, fine[t], coarse[t], block);
     } catch (...) {
-#pragma omp critical(galerkin_product_failure)
-      if (!failure) failure = std::current_exception();
-      failed = true;
+      failure.capture();
     }
   }
-  if (failure) std::rethrow_exception(failure);
+  failure.rethrow();
   return stacked(blocks, rows, prolongation.cols());
 }
 

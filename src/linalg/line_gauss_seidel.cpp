@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <exception>
 #include <numeric>
 #include <stdexcept>
 #include <tuple>
 
 #include "fabform/thread_count.hpp"
+#include "linalg/parallel_failure.hpp"
 
 namespace fabform {
 
@@ -53,19 +53,17 @@ LineGaussSeidel::Family LineGaussSeidel::family(const RowMatrix& a, const std::v
   std::vector<int> line_of(place.size()), position(place.size()), reach(lines.size(), 0);
   for (std::size_t l = 0; l < lines.size(); ++l)
     for (const int u : lines[l].unknowns) line_of[static_cast<std::size_t>(u)] = static_cast<int>(l);
-  // Lines are factorised on every thread: each writes only its own unknowns' positions. An
-  // exception must not leave the parallel loop; one is rethrown after it.
-  std::exception_ptr failure;
+  // Lines are factorised on every thread: each writes only its own unknowns' positions.
+  ParallelFailure failure;
 #pragma omp parallel for schedule(dynamic, 8) if (place.size() >= static_cast<std::size_t>(kMinParallelItems))
   for (std::size_t l = 0; l < lines.size(); ++l) {
     try {
       reach[l] = factorise(a, place, along, line_of, position, static_cast<int>(l), shift, lines[l]);
     } catch (...) {
-#pragma omp critical(line_gauss_seidel_failure)
-      if (!failure) failure = std::current_exception();
+      failure.capture();
     }
   }
-  if (failure) std::rethrow_exception(failure);
+  failure.rethrow();
   split(out, std::accumulate(reach.begin(), reach.end(), 0, [](int m, int r) { return std::max(m, r); }));
   return out;
 }
@@ -160,27 +158,21 @@ void LineGaussSeidel::relax_lines(const RowMatrix& a, const Eigen::VectorXd& b, 
 }
 
 // Forward: both halves, then the seam; backward, the reverse. The halves neither read nor write
-// each other's unknowns (the seam's they only read), so they run at once, on two threads where
-// the run has them. An exception must not leave the parallel loop; one is rethrown after it.
+// each other's unknowns (the seam's they only read), so they run at once.
 void LineGaussSeidel::pass(const RowMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd& x, const Family& family,
                            bool forward) {
   const std::size_t end = family.lines.size();
-  if (!forward) relax_lines(a, b, x, family, family.seam, family.seam_end, false);
-  std::exception_ptr failure;
-  const int threads = std::min(2, threads_in_use());  // no more than the run asked for
-#pragma omp parallel for schedule(static, 1) num_threads(threads) if (family.seam_end < end)
-  for (int half = 0; half < 2; ++half) {
-    try {
-      if (half == 0)
-        relax_lines(a, b, x, family, 0, family.seam, forward);
-      else
-        relax_lines(a, b, x, family, family.seam_end, end, forward);
-    } catch (...) {
-#pragma omp critical(line_gauss_seidel_failure)
-      if (!failure) failure = std::current_exception();
-    }
+  if (family.seam_end == end) {  // one run
+    relax_lines(a, b, x, family, 0, end, forward);
+    return;
   }
-  if (failure) std::rethrow_exception(failure);
+  if (!forward) relax_lines(a, b, x, family, family.seam, family.seam_end, false);
+  on_each_side([&](int half) {
+    if (half == 0)
+      relax_lines(a, b, x, family, 0, family.seam, forward);
+    else
+      relax_lines(a, b, x, family, family.seam_end, end, forward);
+  });
   if (forward) relax_lines(a, b, x, family, family.seam, family.seam_end, true);
 }
 

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <exception>
 #include <tuple>
+
+#include "linalg/parallel_failure.hpp"
 
 namespace fabform {
 namespace {
@@ -19,23 +20,6 @@ void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, con
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info, std::size_t);
 void dpotrs_(const char* uplo, const int* n, const int* nrhs, const double* a, const int* lda,
              double* b, const int* ldb, int* info, std::size_t);
-}
-
-// The two sides, each on its own thread when there are two; an exception in either is
-// rethrown here, after both.
-template <class Work>
-void on_each_side(Work&& work) {
-  std::exception_ptr failed[2];
-#pragma omp parallel for schedule(static, 1)
-  for (int s = 0; s < 2; ++s) {
-    try {
-      work(s);
-    } catch (...) {
-      failed[s] = std::current_exception();
-    }
-  }
-  for (const auto& f : failed)
-    if (f) std::rethrow_exception(f);
 }
 
 // The entries of `pattern` between unknowns that `local` numbers (≥ 0), renumbered, each in
