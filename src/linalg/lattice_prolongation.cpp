@@ -1,7 +1,11 @@
 #include "linalg/lattice_prolongation.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <limits>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace fabform {
 
@@ -40,6 +44,36 @@ void check_lattice(std::array<int, 2> size) {
   if (size[0] < 2 || size[1] < 2) throw std::invalid_argument("lattice prolongation: a lattice under 2 × 2 nodes");
 }
 
+// A row-major matrix from its rows: `row(r, entry)` calls entry(column, value) for each of row r's
+// entries, in any order and no column twice. Written straight into the compressed arrays (a pass
+// to count, a pass to fill), each row sorted by column: Eigen's insert, which shifts each entry
+// into its row's order, was 1.5 % of a multigrid Newton run on the dome at 401 × 401 nodes.
+template <typename Row>
+RowMatrix from_rows(Eigen::Index rows, Eigen::Index columns, Row row) {
+  RowMatrix m(rows, columns);
+  int* outer = m.outerIndexPtr();
+  Eigen::Index count = 0;
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    outer[r] = static_cast<int>(count);
+    row(r, [&](int, double) { ++count; });
+    if (count > std::numeric_limits<int>::max())
+      throw std::length_error("lattice prolongation: more than 2^31 entries");
+  }
+  outer[rows] = static_cast<int>(count);
+  m.resizeNonZeros(count);
+  std::vector<std::pair<int, double>> entries;
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    entries.clear();
+    row(r, [&](int column, double value) { entries.emplace_back(column, value); });
+    std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (std::size_t e = 0; e < entries.size(); ++e) {
+      m.innerIndexPtr()[outer[r] + static_cast<Eigen::Index>(e)] = entries[e].first;
+      m.valuePtr()[outer[r] + static_cast<Eigen::Index>(e)] = entries[e].second;
+    }
+  }
+  return m;
+}
+
 }  // namespace
 
 std::array<int, 2> coarser_lattice(std::array<int, 2> size) {
@@ -49,36 +83,26 @@ std::array<int, 2> coarser_lattice(std::array<int, 2> size) {
 
 RowMatrix lattice_prolongation(std::array<int, 2> size) {
   const std::array<int, 2> coarse = coarser_lattice(size);
-  const int points = size[0] * size[1];
-  RowMatrix p(3 * points, 3 * coarse[0] * coarse[1]);
-  p.reserve(Eigen::VectorXi::Constant(3 * points, 4));
-  for (int j = 0; j < size[1]; ++j)
-    for (int i = 0; i < size[0]; ++i)
-      for_each_weight(size, i, j, [&](int c, double w) {
-        for (int d = 0; d < 3; ++d) p.insert(3 * (i + size[0] * j) + d, 3 * c + d) = w;
-      });
-  p.makeCompressed();
-  return p;
+  return from_rows(3 * size[0] * size[1], 3 * coarse[0] * coarse[1], [&](Eigen::Index row, const auto& entry) {
+    const auto point = static_cast<int>(row / 3), d = static_cast<int>(row % 3);
+    for_each_weight(size, point % size[0], point / size[0], [&](int c, double w) { entry(3 * c + d, w); });
+  });
 }
 
 RowMatrix unknown_prolongation(const LatticeUnknowns& unknowns) {
   const std::array<int, 2> coarse = coarser_lattice(unknowns.lattice_size);
-  const auto n = static_cast<Eigen::Index>(unknowns.node.size());
   if (unknowns.direction.size() != unknowns.node.size())
     throw std::invalid_argument("lattice prolongation: a direction per unknown missing");
-  RowMatrix p(n, 3 * coarse[0] * coarse[1]);
-  p.reserve(Eigen::VectorXi::Constant(n, 12));
-  for (Eigen::Index u = 0; u < n; ++u) {
+  const auto n = static_cast<Eigen::Index>(unknowns.node.size());
+  return from_rows(n, 3 * coarse[0] * coarse[1], [&](Eigen::Index u, const auto& entry) {
     const Eigen::Vector3d& d = unknowns.direction[static_cast<std::size_t>(u)];
-    if (d.isZero(0.0)) continue;
-    const std::array<int, 2> ij = unknowns.node_lattice[static_cast<std::size_t>(unknowns.node[u])];
+    if (d.isZero(0.0)) return;
+    const std::array<int, 2> ij = unknowns.node_lattice[static_cast<std::size_t>(unknowns.node[static_cast<std::size_t>(u)])];
     for_each_weight(unknowns.lattice_size, ij[0], ij[1], [&](int c, double w) {
       for (int a = 0; a < 3; ++a)
-        if (d[a] != 0.0) p.insert(u, 3 * c + a) = w * d[a];
+        if (d[a] != 0.0) entry(3 * c + a, w * d[a]);
     });
-  }
-  p.makeCompressed();
-  return p;
+  });
 }
 
 }  // namespace fabform

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <vector>
 #include <stdexcept>
 
 #include "support/grid_stiffness.hpp"
@@ -66,6 +67,32 @@ TEST(LatticeProlongation, AnUnknownTakesTheInterpolatedMoveAlongItsDirection) {
   EXPECT_NEAR(moves[3 * 7 + 1], tangent.dot(bilinear(2, 1)), 1e-13);
   EXPECT_EQ(moves[3 * 12 + 2], 0.0);
   EXPECT_NEAR(moves[3 * 12 + 0], bilinear(2, 2).x(), 1e-13);
+}
+
+// The matrices are written straight into Eigen's compressed arrays: each row's columns must
+// ascend (Eigen's products assume it) and the matrix be the one Eigen's own insertion of the same
+// entries makes, to the bit. Directions with every component set give rows whose entries arrive
+// out of column order (the coarse points below and above before the one beside).
+TEST(LatticeProlongation, RowsAreCompressedInColumnOrderAsEigenWouldStoreThem) {
+  LatticeUnknowns l = test::grid_lattice(6);
+  for (std::size_t u = 0; u < l.direction.size(); ++u)
+    if (u % 5 == 0) l.direction[u] = Eigen::Vector3d(0.3, -0.9, 0.2 + 0.01 * static_cast<double>(u)).normalized();
+  l.direction[4] = Eigen::Vector3d::Zero();
+  for (const RowMatrix& p : {unknown_prolongation(l), lattice_prolongation({6, 9})}) {
+    ASSERT_TRUE(p.isCompressed());
+    std::vector<Eigen::Triplet<double>> entries;
+    for (Eigen::Index r = 0; r < p.outerSize(); ++r) {
+      int last = -1;
+      for (RowMatrix::InnerIterator it(p, r); it; ++it) {
+        EXPECT_GT(it.col(), last) << "row " << r;
+        last = static_cast<int>(it.col());
+        entries.emplace_back(static_cast<int>(r), last, it.value());
+      }
+    }
+    RowMatrix inserted(p.rows(), p.cols());
+    inserted.setFromTriplets(entries.begin(), entries.end());
+    EXPECT_EQ(Eigen::MatrixXd(inserted), Eigen::MatrixXd(p));
+  }
 }
 
 TEST(LatticeProlongation, RefusesADirectionPerUnknownMissing) {
