@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <vector>
 #include <stdexcept>
 
 #include "support/grid_stiffness.hpp"
@@ -69,29 +68,37 @@ TEST(LatticeProlongation, AnUnknownTakesTheInterpolatedMoveAlongItsDirection) {
   EXPECT_NEAR(moves[3 * 12 + 0], bilinear(2, 2).x(), 1e-13);
 }
 
-// The matrices are written straight into Eigen's compressed arrays: each row's columns must
-// ascend (Eigen's products assume it) and the matrix be the one Eigen's own insertion of the same
-// entries makes, to the bit. Directions with every component set give rows whose entries arrive
-// out of column order (the coarse points below and above before the one beside).
-TEST(LatticeProlongation, RowsAreCompressedInColumnOrderAsEigenWouldStoreThem) {
+// The matrices are written straight into Eigen's compressed arrays, so each row's columns must
+// ascend (Eigen's products and iterators assume it). Directions with every component set give
+// rows whose entries arrive out of column order (a coarse point's neighbour along j before its
+// neighbour along i); every unknown must still take the interpolated move along its direction.
+TEST(LatticeProlongation, RowsAreInColumnOrderAndEveryUnknownInterpolates) {
   LatticeUnknowns l = test::grid_lattice(6);
   for (std::size_t u = 0; u < l.direction.size(); ++u)
     if (u % 5 == 0) l.direction[u] = Eigen::Vector3d(0.3, -0.9, 0.2 + 0.01 * static_cast<double>(u)).normalized();
   l.direction[4] = Eigen::Vector3d::Zero();
-  for (const RowMatrix& p : {unknown_prolongation(l), lattice_prolongation({6, 9})}) {
-    ASSERT_TRUE(p.isCompressed());
-    std::vector<Eigen::Triplet<double>> entries;
-    for (Eigen::Index r = 0; r < p.outerSize(); ++r) {
-      int last = -1;
-      for (RowMatrix::InnerIterator it(p, r); it; ++it) {
+  const RowMatrix by_unknowns = unknown_prolongation(l);
+  const RowMatrix by_lattice = lattice_prolongation({6, 9});
+  for (const RowMatrix* p : {&by_unknowns, &by_lattice}) {
+    ASSERT_TRUE(p->isCompressed());
+    for (Eigen::Index r = 0; r < p->outerSize(); ++r) {
+      Eigen::Index last = -1;
+      for (RowMatrix::InnerIterator it(*p, r); it; ++it) {
         EXPECT_GT(it.col(), last) << "row " << r;
-        last = static_cast<int>(it.col());
-        entries.emplace_back(static_cast<int>(r), last, it.value());
+        last = it.col();
       }
     }
-    RowMatrix inserted(p.rows(), p.cols());
-    inserted.setFromTriplets(entries.begin(), entries.end());
-    EXPECT_EQ(Eigen::MatrixXd(inserted), Eigen::MatrixXd(p));
+  }
+  const std::array<int, 2> coarse = coarser_lattice({6, 6});
+  Eigen::VectorXd coarse_field(3 * coarse[0] * coarse[1]);
+  for (int j = 0; j < coarse[1]; ++j)
+    for (int i = 0; i < coarse[0]; ++i)
+      coarse_field.segment<3>(3 * (i + coarse[0] * j)) = bilinear(fine_index(i, 6), fine_index(j, 6));
+  const Eigen::VectorXd moves = by_unknowns * coarse_field;
+  for (std::size_t u = 0; u < l.direction.size(); ++u) {
+    const std::array<int, 2> ij = l.node_lattice[static_cast<std::size_t>(l.node[u])];
+    // Sums of at most twelve products of numbers of order 10: rounding at 1e-14.
+    EXPECT_NEAR(moves[static_cast<Eigen::Index>(u)], l.direction[u].dot(bilinear(ij[0], ij[1])), 1e-13) << "unknown " << u;
   }
 }
 
