@@ -16,6 +16,11 @@ wall seconds (result.json's wall_seconds, the whole run) and solve seconds (solv
 the coarser grids' with --continuation), medians over the runs; iterations (on the scene's own
 grid); peak memory (the largest resident size of the runs, from wait4's rusage); and
 result.json's position_error_m, the estimate of the largest node distance from the exact rest.
+Newton's path near the rest is sensitive to rounding-level differences (which nodes touch the
+faceted dome, how many iterations the tail takes), so one run cannot tell a change of algorithm
+from chance: --seeds S1,S2,... runs each size once per seed instead of --runs times, each start
+moved by a seeded imperfection (`--set initial.perturbation_m=` --perturbation, default 1e-6 m,
+`initial.seed=S`), and reports the median iterations with their range over the seeds.
 Where N <= --reference-max it also solves to --reference-tol (the reference) and measures the
 largest node distance of the first run from it, the figure the estimate is checked against
 (first thread count only; with --continuation the reference's coarser rests differ from the
@@ -50,7 +55,8 @@ SIZES = "101,201,401,1001"
 TOLERANCE_N = 1e-6     # the dome scene's e
 SOLVER = "newton"
 LINEAR_SOLVERS = ("auto", "cholesky", "multigrid")
-COLUMNS = ["N", "build", "threads", "nodes", "status", "runs", "wall_s", "solve_s", "iterations", "linear_solver", "cg_iterations",
+COLUMNS = ["N", "build", "threads", "nodes", "status", "runs", "wall_s", "solve_s", "iterations", "iterations_min",
+           "iterations_max", "linear_solver", "cg_iterations",
            "peak_MiB", "position_error_m", "measured_distance_m", "note"]
 
 
@@ -83,6 +89,17 @@ def parse_threads(text: str) -> list:
     return counts
 
 
+def parse_seeds(text: str) -> list:
+    """'3,1,3' -> [3, 1], in the order given without duplicates; each 0 ... 2^64 - 1; '' -> []."""
+    try:
+        seeds = list(dict.fromkeys(int(v) for v in text.split(",") if v.strip()))
+    except ValueError:
+        fail(f"--seeds: not a comma-separated list of integers: '{text}'")
+    if not all(0 <= s < 2 ** 64 for s in seeds):
+        fail("--seeds: seeds must be 0 ... 2^64 - 1")
+    return seeds
+
+
 def parse_args(argv: list) -> argparse.Namespace:
     p = argparse.ArgumentParser(prog="bench_solvers.py --scale", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -93,6 +110,10 @@ def parse_args(argv: list) -> argparse.Namespace:
     p.add_argument("--threads", default="1", help="thread counts, each run in turn, e.g. 1,2 (1)")
     p.add_argument("--continuation", type=int, default=0,
                    help="newton's grid continuation, solver.continuation_levels, 0 ... 10 (0: none)")
+    p.add_argument("--seeds", default="",
+                   help="one run a size per seed, each start with a seeded imperfection, e.g. 1,2,3 (none)")
+    p.add_argument("--perturbation", type=float, default=1e-6,
+                   help="the imperfection with --seeds, initial.perturbation_m, m (1e-6)")
     p.add_argument("--baseline", default="", help="another fabform binary to time on the same sizes")
     p.add_argument("--linear-solver", default="auto",
                    help="newton's linear solve, solver.linear_solver: " + ", ".join(LINEAR_SOLVERS) + " (auto)")
@@ -107,6 +128,9 @@ def parse_args(argv: list) -> argparse.Namespace:
     if args.runs < 1:
         fail("--runs: at least 1")
     args.threads = parse_threads(args.threads)
+    args.seeds = parse_seeds(args.seeds)
+    if not (math.isfinite(args.perturbation) and args.perturbation > 0):
+        fail("--perturbation: must be a positive distance in metres")
     if not 0 <= args.continuation <= 10:
         fail("--continuation: must be 0 ... 10")
     if args.baseline and not pathlib.Path(args.baseline).is_file():
@@ -165,20 +189,20 @@ def builds(args) -> list:
     return this + ([Build("baseline", args.baseline, args.threads[0], ())] if args.baseline else [])
 
 
-def command(n: int, tolerance: float, build: Build, out: pathlib.Path) -> list:
-    sets = [item for kv in build.sets for item in ("--set", kv)]
+def command(n: int, tolerance: float, build: Build, out: pathlib.Path, seed_sets: tuple = ()) -> list:
+    sets = [item for kv in build.sets + seed_sets for item in ("--set", kv)]
     return [build.binary, "run", str(bench.scene_path("dome")), "--out", str(out), "--solver", SOLVER,
             "--tol", repr(tolerance), "--threads", str(build.threads), "--max-iter", str(bench.MAX_ITERATIONS),
             "--set", f"fabric.divisions=[{n - 1},{n - 1}]", *sets, "--quiet"]
 
 
-def run_once(n: int, tolerance: float, build: Build, out: pathlib.Path, budget: float) -> dict:
+def run_once(n: int, tolerance: float, build: Build, out: pathlib.Path, budget: float, seed_sets: tuple = ()) -> dict:
     """One fabform run within `budget` seconds: its figures, and its positions when it finished."""
     if out.exists():
         shutil.rmtree(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     log = out.parent / f"{out.name}.stderr.txt"
-    code, peak, wall = bench.wait_within(bench.launch(command(n, tolerance, build, out), log), budget)
+    code, peak, wall = bench.wait_within(bench.launch(command(n, tolerance, build, out, seed_sets), log), budget)
     if code is None:
         return {"status": "over the timeout", "peak_MiB": peak, "note": f"killed after {budget:g} s"}
     result_file = out / "result.json"
@@ -197,15 +221,26 @@ def folder(build: Build, n: int, out: pathlib.Path) -> pathlib.Path:
     return out / f"N{n}" / f"{build.label}-T{build.threads}"
 
 
+def seed_sets(args, build: Build, run: int) -> tuple:
+    """The --set options of a size's run-th run (from 0): its seed's imperfection, if seeded.
+    The baseline, which may predate these keys, runs unseeded."""
+    if not args.seeds or build.label == "baseline":
+        return ()
+    return (f"initial.perturbation_m={args.perturbation!r}", f"initial.seed={args.seeds[run]}")
+
+
 def measure_size(n: int, build: Build, args, out: pathlib.Path) -> dict:
-    """Up to --runs runs of one size, all within --timeout; the row of its medians."""
+    """Up to --runs runs of one size (one per seed with --seeds), all within --timeout; the row of
+    their medians."""
     runs, spent = [], 0.0
     row = {"N": n, "build": build.label, "threads": build.threads}
-    while len(runs) < args.runs:
+    wanted = len(args.seeds) if args.seeds and build.label != "baseline" else args.runs
+    while len(runs) < wanted:
         left = args.timeout - spent
         if runs and runs[-1]["wall_s"] > left:  # one more would not fit in the timeout
             break
-        run = run_once(n, TOLERANCE_N, build, folder(build, n, out) / f"run{len(runs) + 1}", left)
+        run = run_once(n, TOLERANCE_N, build, folder(build, n, out) / f"run{len(runs) + 1}", left,
+                       seed_sets(args, build, len(runs)))
         print(f"  N={n} {build.name()} run {len(runs) + 1}: {run['status']}, {run.get('wall_s', '-')} s",
               file=sys.stderr)
         if run["status"] != "converged":
@@ -218,16 +253,20 @@ def measure_size(n: int, build: Build, args, out: pathlib.Path) -> dict:
     return dict(row, nodes=first["nodes"], status="converged", runs=len(runs),
                 wall_s=statistics.median(r["wall_s"] for r in runs),
                 solve_s=statistics.median(r["solve_s"] for r in runs),
-                iterations=first["iterations"], linear_solver=first["linear_solver"],
-                cg_iterations=first["cg_iterations"], peak_MiB=max(r["peak_MiB"] for r in runs),
+                iterations=statistics.median_low(r["iterations"] for r in runs),
+                iterations_min=min(r["iterations"] for r in runs), iterations_max=max(r["iterations"] for r in runs),
+                linear_solver=first["linear_solver"],
+                cg_iterations=statistics.median_low(r["cg_iterations"] or 0 for r in runs), peak_MiB=max(r["peak_MiB"] for r in runs),
                 position_error_m=first["position_error_m"], positions=first["positions"], note="")
 
 
 def add_measured_distance(row: dict, build: Build, args, out: pathlib.Path) -> None:
-    """The first run's largest node distance from newton at --reference-tol, where affordable."""
+    """The first run's largest node distance from newton at --reference-tol (from the same start),
+    where affordable."""
     if row["status"] != "converged" or row["N"] > args.reference_max:
         return
-    ref = run_once(row["N"], args.reference_tol, build, folder(build, row["N"], out) / "reference", args.timeout)
+    ref = run_once(row["N"], args.reference_tol, build, folder(build, row["N"], out) / "reference", args.timeout,
+                   seed_sets(args, build, 0))
     if ref.get("positions") is None:
         row["note"] = f"reference {ref['status']}"
         return
@@ -266,15 +305,20 @@ def ratio_cell(row: dict) -> str:
     return f"{est / measured:.2f}" if est and measured else ""
 
 
+def iteration_range(row: dict) -> str:
+    low, high = row.get("iterations_min"), row.get("iterations_max")
+    return "" if low is None else f"{low}–{high}"
+
+
 def table(rows: list) -> list:
     lines = ["| N | build | threads | nodes | status | runs | wall s (median) | solve s (median) | iterations "
-             "| linear solve | CG iterations | peak MiB | position_error_m | measured distance (m) "
-             "| estimate / measured | note |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "(median) | iterations (range) | linear solve | CG iterations (median) | peak MiB | position_error_m "
+             "| measured distance (m) | estimate / measured | note |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append("| " + " | ".join([
             str(r["N"]), r["build"], str(r["threads"]), str(r["nodes"]), r["status"], str(r["runs"]),
-            cell(r, "wall_s", ".3g"), cell(r, "solve_s", ".3g"), cell(r, "iterations", "d"),
+            cell(r, "wall_s", ".3g"), cell(r, "solve_s", ".3g"), cell(r, "iterations", "d"), iteration_range(r),
             r.get("linear_solver") or "", cell(r, "cg_iterations", "d"), cell(r, "peak_MiB", ".0f"),
             cell(r, "position_error_m", ".2e"), cell(r, "measured_distance_m", ".2e"), ratio_cell(r),
             r.get("note", "")]) + " |")
@@ -329,6 +373,7 @@ def report(rows: list, args, load_before: tuple, load_after: tuple) -> str:
             f"`bench_solvers.py {' '.join(sys.argv[1:])}`, {bench.fabform_version()}, {os.cpu_count()} cores, "
             f"threads {threads}, linear solve {args.linear_solver}, continuation levels {args.continuation}"
             + (f", baseline {args.baseline}" if args.baseline else "")
+            + (f", seeds {','.join(map(str, args.seeds))} ({args.perturbation:g} m imperfection)" if args.seeds else "")
             + f"; timeout {args.timeout:g} s a size and build; load average "
             f"{load_before[0]:.2f} before, {load_after[0]:.2f} after (a shared machine: timings under load). "
             f"Distances measured from newton at {args.reference_tol:g} N where N <= {args.reference_max}.", ""]

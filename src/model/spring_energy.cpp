@@ -13,9 +13,9 @@ Vector6d spring_gradient(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
 }
 
 Eigen::Matrix3d projected_spring_stiffness(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
-                                           const Spring& spring, const TensionTable& table) {
+                                           const Spring& spring, const TensionTable& table, double slack_axial) {
   SpringStiffness k = spring_stiffness_parts(xa, xb, spring, table);
-  k.axial = std::max(k.axial, 0.0);
+  k.axial = k.axial > 0.0 ? k.axial : slack_axial;
   k.transverse = std::max(k.transverse, 0.0);
   return k.matrix();
 }

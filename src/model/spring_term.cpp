@@ -1,6 +1,7 @@
 #include "fabform/model/spring_term.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdio>
 #include <optional>
@@ -126,6 +127,11 @@ void SpringTerm::add_stiffness(const Model& model, const Positions& x, Stiffness
   // A spring over an edge couples its ends by a full 6 × 6 block; kept only where a body wraps.
   const bool wraps = model.wraps_edges();
   std::vector<std::optional<Matrix6d>> wrapped(wraps ? springs.size() : 0);
+  // Per kind this term covers, the slack floor's slope (N/m per unit strain), found once.
+  std::array<double, 4> slack_slope{};
+  for (const SpringKind kind : {SpringKind::warp, SpringKind::weft, SpringKind::shear, SpringKind::bend})
+    if (covers(kind) && sink.slack_share() > 0.0)
+      slack_slope[static_cast<std::size_t>(kind)] = sink.slack_share() * steepest_slope(model.table(kind));
 #pragma omp parallel for schedule(static) if (springs.size() >= kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(springs.size()); ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -137,7 +143,8 @@ void SpringTerm::add_stiffness(const Model& model, const Positions& x, Stiffness
         wrapped[k] = wrapped_spring_hessian(xa, xb, *wrap, s, model.table(s.kind), true);
         continue;
       }
-    stiffness[k] = projected_spring_stiffness(xa, xb, s, model.table(s.kind));
+    const double slack_axial = s.width * slack_slope[static_cast<std::size_t>(s.kind)] / s.rest_length;
+    stiffness[k] = projected_spring_stiffness(xa, xb, s, model.table(s.kind), slack_axial);
   }
   for (std::size_t i = 0; i < springs.size(); ++i) {
     if (!covers(springs[i].kind)) continue;

@@ -515,6 +515,7 @@ void read_solver(TableReader r, Scene* scene) {
     s.set_max_iterations(checked_int(r, "max_iterations", r.integer("max_iterations", 0), 0, 1'000'000'000));
   s.relax.C = r.number("C", s.relax.C);
   s.newton.regularization = r.number("regularization", s.newton.regularization);
+  s.newton.slack_stiffness = r.number("slack_stiffness", s.newton.slack_stiffness);
   s.newton.armijo = r.number("armijo", s.newton.armijo);
   s.newton.max_backtracks = checked_int(
       r, "max_backtracks", r.integer("max_backtracks", s.newton.max_backtracks), 1, 200);
@@ -535,7 +536,7 @@ void read_solver(TableReader r, Scene* scene) {
   std::string field;
   for (const SolverEntry& solver : solvers())
     if (const std::string why = solver.invalid_reason(s, &field); !why.empty()) r.fail(field, why);
-  r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "tolerance_m", "max_iterations", "C", "regularization", "armijo",
+  r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "tolerance_m", "max_iterations", "C", "regularization", "slack_stiffness", "armijo",
                     "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
                     "stretch_limit", "threads", "friction_creep", "continuation_levels", "linear_solver"});
 }

@@ -32,6 +32,8 @@ std::string NewtonOptions::invalid_reason(std::string* field) const {
   if (max_iterations < 0) return bad("max_iterations", "must not be negative");
   if (!(regularization > 0.0 && regularization <= 1.0))
     return bad("regularization", "must be in (0, 1]");
+  if (!(slack_stiffness >= 0.0 && slack_stiffness <= 1.0))
+    return bad("slack_stiffness", "must be in [0, 1]: a share of the table's steepest slope");
   if (!(armijo > 0.0 && armijo < 0.5)) return bad("armijo", "must be in (0, 0.5)");
   if (!(max_backtracks >= 1 && max_backtracks <= 200))
     return bad("max_backtracks", "must be between 1 and 200");
@@ -111,8 +113,10 @@ class NewtonStep {
   }
 
   /// The Newton step from the current state (nodes its force pulls off a body are released
-  /// first, as the step would); none when the matrix gives no descent direction.
-  std::optional<Proposal> propose(double loosest = kMaxForcing) {
+  /// first, as the step would); none when the matrix gives no descent direction. A step that
+  /// measures the distance from the rest (`measuring`) takes the exact matrix: the slack floor
+  /// (NewtonOptions::slack_stiffness) would shorten it where the fabric is slack.
+  std::optional<Proposal> propose(double loosest = kMaxForcing, bool measuring = false) {
     const std::vector<Eigen::Vector3d> stored = node_forces(model_, state_.x);
     release_pulling_nodes(model_, stored, state_);
     Proposal p{{}, lag_friction(model_, state_, stored, creep_m_), {}};
@@ -120,7 +124,9 @@ class NewtonStep {
     const FreeDirections directions = free_directions(model_, state_.contact);
     if (directions.used == 0) return std::nullopt;
     const Eigen::VectorXd f = reduced_forces(directions, p.forces);
-    const auto step = solve(hessian_.assemble(model_, state_.x, directions, p.friction.empty() ? nullptr : &p.friction),
+    const double slack_share = measuring ? 0.0 : options_.slack_stiffness;
+    const auto step = solve(hessian_.assemble(model_, state_.x, directions, p.friction.empty() ? nullptr : &p.friction,
+                                              slack_share),
                             f, directions, std::min(forcing(f.norm()), loosest));
     if (!step) return std::nullopt;
     p.steps = node_steps(directions, *step);
@@ -131,7 +137,7 @@ class NewtonStep {
   /// which it leaves as it is (NaN without a step).
   double next_step_size() {
     const std::vector<NodeContact> contact = state_.contact;
-    const std::optional<Proposal> p = propose(kMeasuringForcing);
+    const std::optional<Proposal> p = propose(kMeasuringForcing, true);
     state_.contact = contact;
     return p ? largest_move(p->steps) : std::nan("");
   }
@@ -287,7 +293,7 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
     // releases nodes that pull off a body; a run that stops here keeps the state's own contact.
     std::vector<NodeContact> contact;
     if (options.tolerance_m > 0.0) contact = state.contact;
-    const std::optional<Proposal> proposal = step.propose(loosest);
+    const std::optional<Proposal> proposal = step.propose(loosest, options.tolerance_m > 0.0);
     step_sizes.push_back(proposal ? largest_move(proposal->steps) : std::nan(""));
     const double distance = step.steps_were_loose() ? std::nan("") : newton_position_error(step_sizes);
     if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) {

@@ -15,13 +15,14 @@ std::size_t at(int index) { return static_cast<std::size_t>(index); }
 class PairSums final : public StiffnessSink {
  public:
   PairSums(const FreeDirections& directions, const std::vector<int>& start, const std::vector<int>& row,
-           std::vector<Eigen::Matrix3d>* block)
-      : d_(directions), start_(start), row_(row), block_(block) {}
+           std::vector<Eigen::Matrix3d>* block, double slack_share)
+      : d_(directions), start_(start), row_(row), block_(block), slack_share_(slack_share) {}
 
   void add(int row, int col, const Eigen::Matrix3d& stiffness) override {
     if (row >= col) sum(row, col, stiffness);
     else sum(col, row, stiffness.transpose());
   }
+  double slack_share() const override { return slack_share_; }
   std::vector<std::pair<int, int>>& missing() { return missing_; }
 
  private:
@@ -36,15 +37,16 @@ class PairSums final : public StiffnessSink {
   const std::vector<int>& start_;
   const std::vector<int>& row_;
   std::vector<Eigen::Matrix3d>* block_;
+  double slack_share_;
   std::vector<std::pair<int, int>> missing_;
 };
 
 }  // namespace
 
 bool ReducedHessian::sum_blocks(const Model& model, const std::vector<Eigen::Vector3d>& x,
-                                const FreeDirections& directions, const Term* lagged) {
+                                const FreeDirections& directions, const Term* lagged, double slack_share) {
   std::fill(block_.begin(), block_.end(), Eigen::Matrix3d::Zero());
-  PairSums sums(directions, start_, row_, &block_);
+  PairSums sums(directions, start_, row_, &block_, slack_share);
   for (const auto& term : model.terms) term->add_stiffness(model, x, sums);
   if (lagged) lagged->add_stiffness(model, x, sums);
   if (sums.missing().empty()) return true;
@@ -105,7 +107,8 @@ Eigen::SparseMatrix<double> ReducedHessian::written_out(const FreeDirections& d)
 }
 
 Eigen::SparseMatrix<double> ReducedHessian::assemble(const Model& model, const std::vector<Eigen::Vector3d>& x,
-                                                     const FreeDirections& directions, const Term* lagged) {
+                                                     const FreeDirections& directions, const Term* lagged,
+                                                     double slack_share) {
   if (start_.size() != at(model.node_count()) + 1) {  // a model of another size: start again
     start_.assign(1, 0);
     row_.clear();
@@ -113,7 +116,7 @@ Eigen::SparseMatrix<double> ReducedHessian::assemble(const Model& model, const s
   }
   // Again with the pairs a pass found, until none is missing (the pairs only grow, so it ends;
   // the terms hand the same pairs each time, so at most twice).
-  while (!sum_blocks(model, x, directions, lagged)) {
+  while (!sum_blocks(model, x, directions, lagged, slack_share)) {
   }
   return written_out(directions);
 }

@@ -20,13 +20,17 @@ namespace fabform {
 /// and are never dropped, so the matrix's pattern stays the same from one Newton step to the next.
 class ReducedHessian {
  public:
+
   /// `lagged` is a term Newton holds for one iteration (friction), added to the model's own.
+  /// `slack_share`: what a slack spring keeps of its table's steepest slope along it
+  /// (StiffnessSink::slack_share); 0 assembles ∂²Π/∂x² itself, projected.
   Eigen::SparseMatrix<double> assemble(const Model& model, const std::vector<Eigen::Vector3d>& x,
-                                       const FreeDirections& directions, const Term* lagged = nullptr);
+                                       const FreeDirections& directions, const Term* lagged = nullptr,
+                                       double slack_share = 0.0);
 
  private:
   bool sum_blocks(const Model& model, const std::vector<Eigen::Vector3d>& x, const FreeDirections& directions,
-                  const Term* lagged);
+                  const Term* lagged, double slack_share);
   void add_pairs(int nodes, std::vector<std::pair<int, int>> missing);
   Eigen::SparseMatrix<double> written_out(const FreeDirections& directions) const;
 

@@ -126,6 +126,28 @@ TEST(SpringEnergy, ProjectedHessianIsPositiveSemiDefinite) {
 
 // Summing every spring's gradient over a randomly deformed grid gives, at every node, minus
 // the force node_force computes spring by spring (the same terms, so to a few roundings).
+// A slack floor replaces only an axial stiffness the table gives as 0 (slack) or less (softening),
+// along the spring; a taut spring's stiffness is the projection's own.
+TEST(SpringEnergy, SlackFloorActsAlongASlackSpringOnly) {
+  const double floor = 7.0;  // N/m
+  for (const TensionTable& table : tables()) {
+    SCOPED_TRACE(table.name());
+    for (const Sample& s : samples(kSpring.rest_length, 11u)) {
+      const Eigen::Vector3d xa = s.x.head<3>(), xb = s.x.tail<3>();
+      const Eigen::Matrix3d plain = projected_spring_stiffness(xa, xb, kSpring, table);
+      const Eigen::Matrix3d floored = projected_spring_stiffness(xa, xb, kSpring, table, floor);
+      const Eigen::Vector3d u = (xb - xa).normalized();
+      const double scale = std::max(plain.norm(), floor);
+      if (table.slope(s.strain) > 0.0) {
+        EXPECT_LE((floored - plain).norm(), 1e-15 * scale);
+      } else {
+        EXPECT_NEAR((floored - plain).norm(), floor, 1e-12 * scale);  // u uᵀ has norm 1
+        EXPECT_NEAR(u.dot(floored * u) - u.dot(plain * u), floor, 1e-12 * scale);
+      }
+    }
+  }
+}
+
 TEST(SpringEnergy, MinusTotalGradientIsTheNodeForce) {
   Fabric grid({0.1, 0.08, 7, 5});
   const TensionTable table = tables()[0];

@@ -41,12 +41,17 @@ class Options(unittest.TestCase):
     def test_sizes_are_sorted_without_duplicates(self):
         self.assertEqual(bench_scale.parse_args(["--scale", "--sizes", "201,101,201"]).sizes, [101, 201])
 
+    def test_seeds_keep_their_order(self):
+        self.assertEqual(bench_scale.parse_args(["--scale", "--seeds", "3,1,3"]).seeds, [3, 1])
+        self.assertEqual(bench_scale.parse_args(["--scale"]).seeds, [])
+
     def test_bad_options_exit_2(self):
         for bad in (["--sizes", "abc"], ["--sizes", ""], ["--sizes", "2"], ["--sizes", "10002"],
                     ["--timeout", "0"], ["--timeout", "-5"], ["--timeout", "nan"], ["--timeout", "soon"],
                     ["--runs", "0"], ["--threads", "0"], ["--threads", "1,x"], ["--threads", "65"],
                     ["--reference-tol", "0"], ["--linear-solver", "lu"], ["--continuation", "11"],
-                    ["--continuation", "-1"], ["--baseline", "/nonexistent/fabform"]):
+                    ["--continuation", "-1"], ["--baseline", "/nonexistent/fabform"], ["--seeds", "1,x"],
+                    ["--seeds", "-1"], ["--perturbation", "0"], ["--perturbation", "inf"]):
             with self.subTest(bad=bad):
                 self.assertEqual(exit_status(["--scale", *bad]), 2)
 
@@ -78,6 +83,10 @@ class Fits(unittest.TestCase):
         ratio, why = bench_scale.time_ratio(rows[:1], "solve_s")
         self.assertIsNone(ratio)
         self.assertIn("N=1001 was not asked for", why)
+
+
+def overrides_of(run: pathlib.Path) -> dict:
+    return {o["key"]: o["value"] for o in json.loads((run / "result.json").read_text())["overrides"]}
 
 
 BINARY = pathlib.Path(os.environ.get("FABFORM_BINARY", TOOLS.parent / "build" / "fabform"))
@@ -133,6 +142,23 @@ class TinyDomes(unittest.TestCase):
         self.assertEqual([c["divisions"] for c in solved["this-T1"]["continuation"]], [[10, 10]])
         self.assertEqual(solved["this-T2"]["threads"], 2)
         self.assertNotIn("continuation", solved["baseline-T1"])
+
+    def test_each_seed_runs_once_from_its_own_start(self):
+        with tempfile.TemporaryDirectory() as out:
+            rows, text = self.scale(out, "--sizes", "21", "--runs", "1", "--timeout", "120", "--reference-max", "21",
+                                    "--seeds", "4,7", "--perturbation", "1e-4")
+            seeds = [overrides_of(pathlib.Path(out) / "N21" / "this-T1" / run) for run in ("run1", "run2", "reference")]
+        row = rows[0]
+        self.assertEqual((row["status"], row["runs"]), ("converged", "2"))  # the seeds, not --runs
+        low, median, high = (int(row[k]) for k in ("iterations_min", "iterations", "iterations_max"))
+        self.assertTrue(low <= median <= high, row)
+        self.assertIn(f"| {low}–{high} |", text)
+        self.assertIn("seeds 4,7 (0.0001 m imperfection)", text)
+        # Each seed's own start; the distance is measured from the first seed's.
+        self.assertEqual([(o["initial.seed"], o["initial.perturbation_m"]) for o in seeds],
+                         [("4", "0.0001"), ("7", "0.0001"), ("4", "0.0001")])
+        estimate, measured = float(row["position_error_m"]), float(row["measured_distance_m"])
+        self.assertTrue(measured / 3 <= estimate <= 3 * measured, row)
 
     def test_a_size_over_the_timeout_is_reported_and_larger_ones_not_run(self):
         with tempfile.TemporaryDirectory() as out:

@@ -23,6 +23,9 @@ class StiffnessSink {
   /// Adds K to the block coupling nodes `row` and `col` and, when they differ, Kᵀ to the
   /// block (col, row): a term hands each pair once.
   virtual void add(int row, int col, const Eigen::Matrix3d& stiffness) = 0;
+  /// A slack spring's stiffness is zero; a step's matrix may take this share of its table's
+  /// steepest slope along it instead (spring_energy.hpp). 0: the energy's own second derivative.
+  virtual double slack_share() const { return 0.0; }
 };
 
 /// What bounds an explicit time step: per node, half the sum of the absolute stiffness in its

@@ -27,6 +27,10 @@ struct NewtonOptions {
   // μ added to the matrix's diagonal, relative to its mean diagonal entry: keeps it definite
   // where springs are slack (zero stiffness). Raised ×10 while the step is poor, lowered back.
   double regularization = 1e-8;
+  // What a slack spring (zero stiffness) keeps in Newton's matrix, as a share of its table's
+  // steepest slope along it: nodes held mostly by slack springs then take measured steps
+  // instead of near-singular ones. Changes the path, not the rest. 0: the exact matrix.
+  double slack_stiffness = 0.0;
   double armijo = 1e-4;      // sufficient decrease: Π(x + Δx) ≤ Π(x) + armijo · ∇Π·Δx
   int max_backtracks = 60;   // step halvings before the line search is declared stalled
   // Friction's creep length ε as a fraction of the mean spring length: a node that slipped
