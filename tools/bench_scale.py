@@ -31,7 +31,9 @@ squares on log t against log nodes over the sizes that finished (solve and wall)
 t(1001) / t(201); per N, each thread count's speed-up over the first's (wall and solve).
 --baseline names another fabform binary (an older build, say) run on the same sizes, with the
 first thread count and none of the --set options above (it may predate them); per N the report
-gives its wall seconds over this build's, the issue's "× faster than newton at efbbdec".
+gives its wall seconds over this build's, the issue's "× faster than newton at efbbdec". It runs a
+copy of the dome scene written into --out without the keys newer than such a build may know
+(NEWER_KEYS), its file paths made absolute.
 
 Writes scale.csv and scale.md into --out (default results/bench_scale) and prints scale.md.
 The machine's load average is printed with it: timings on a shared machine are under load.
@@ -43,6 +45,7 @@ import dataclasses
 import json
 import math
 import os
+import re
 import pathlib
 import shutil
 import statistics
@@ -55,6 +58,8 @@ SIZES = "101,201,401,1001"
 TOLERANCE_N = 1e-6     # the dome scene's e
 SOLVER = "newton"
 LINEAR_SOLVERS = ("auto", "cholesky", "multigrid")
+# Keys the dome scene sets that an older build (--baseline) would refuse as unknown.
+NEWER_KEYS = ("slack_stiffness",)
 COLUMNS = ["N", "build", "threads", "nodes", "status", "runs", "wall_s", "solve_s", "iterations", "iterations_min",
            "iterations_max", "linear_solver", "cg_iterations",
            "peak_MiB", "position_error_m", "measured_distance_m", "note"]
@@ -175,23 +180,40 @@ class Build:
     binary: str
     threads: int
     sets: tuple       # "KEY=VALUE" for --set
+    scene: str = ""   # the scene file; "" for the dome as shipped
 
     def name(self) -> str:
         return f"{self.label}, {self.threads} thread(s)"
 
 
-def builds(args) -> list:
-    """This build once per thread count, then the baseline (if any) with the first."""
+def baseline_scene(out: pathlib.Path) -> pathlib.Path:
+    """The dome for an older build: a copy in `out` without NEWER_KEYS, its relative paths
+    (resolved from the scene's folder) made absolute."""
+    source = bench.scene_path("dome")
+    absolute = lambda m: '"' + str((source.parent / m.group(1)).resolve()) + '"'  # noqa: E731
+    lines = [re.sub(r'"(\.\.?/[^"]*)"', absolute, line) for line in source.read_text().splitlines()
+             if line.split("=", 1)[0].strip() not in NEWER_KEYS]
+    out.mkdir(parents=True, exist_ok=True)
+    copy = out / "baseline_dome.toml"
+    copy.write_text("\n".join(lines) + "\n")
+    return copy
+
+
+def builds(args, out: pathlib.Path = None) -> list:
+    """This build once per thread count, then the baseline (if any) with the first; with `out`,
+    the baseline's scene is written there."""
     sets = [f"solver.linear_solver={args.linear_solver}"]
     if args.continuation:
         sets.append(f"solver.continuation_levels={args.continuation}")
     this = [Build("this", str(bench.FABFORM), t, tuple(sets)) for t in args.threads]
-    return this + ([Build("baseline", args.baseline, args.threads[0], ())] if args.baseline else [])
+    if not args.baseline:
+        return this
+    return this + [Build("baseline", args.baseline, args.threads[0], (), str(baseline_scene(out)) if out else "")]
 
 
 def command(n: int, tolerance: float, build: Build, out: pathlib.Path, seed_sets: tuple = ()) -> list:
     sets = [item for kv in build.sets + seed_sets for item in ("--set", kv)]
-    return [build.binary, "run", str(bench.scene_path("dome")), "--out", str(out), "--solver", SOLVER,
+    return [build.binary, "run", build.scene or str(bench.scene_path("dome")), "--out", str(out), "--solver", SOLVER,
             "--tol", repr(tolerance), "--threads", str(build.threads), "--max-iter", str(bench.MAX_ITERATIONS),
             "--set", f"fabric.divisions=[{n - 1},{n - 1}]", *sets, "--quiet"]
 
@@ -277,7 +299,7 @@ def measure(args, out: pathlib.Path) -> list:
     """Every size with every build, smaller sizes first; a build over the timeout runs no larger size."""
     rows = []
     for n in args.sizes:
-        for build in builds(args):
+        for build in builds(args, out):
             reached = [r for r in rows if r["status"] == "over the timeout"
                        and (r["build"], r["threads"]) == (build.label, build.threads)]
             if reached:

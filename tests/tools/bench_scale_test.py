@@ -131,6 +131,7 @@ class TinyDomes(unittest.TestCase):
             # The baseline runs with none of the --set options: no coarser grid first.
             solved = {d.name: json.loads((d / "run1" / "result.json").read_text())
                       for d in (pathlib.Path(out) / "N21").iterdir()}
+            baseline_scene = (pathlib.Path(out) / "baseline_dome.toml").read_text()
         self.assertEqual([(r["N"], r["build"], r["threads"]) for r in rows],
                          [(n, b, t) for n in ("11", "21") for b, t in (("this", "1"), ("this", "2"), ("baseline", "1"))])
         self.assertTrue(all(r["status"] == "converged" for r in rows), rows)
@@ -142,6 +143,11 @@ class TinyDomes(unittest.TestCase):
         self.assertEqual([c["divisions"] for c in solved["this-T1"]["continuation"]], [[10, 10]])
         self.assertEqual(solved["this-T2"]["threads"], 2)
         self.assertNotIn("continuation", solved["baseline-T1"])
+        # An older build may not know the dome's newer keys: it runs a copy without them, whose
+        # paths still lead to the mold and the tables.
+        self.assertTrue(solved["baseline-T1"]["scene_file"].endswith("baseline_dome.toml"))
+        self.assertNotIn("slack_stiffness", baseline_scene)
+        self.assertNotIn('"../', baseline_scene)
 
     def test_each_seed_runs_once_from_its_own_start(self):
         with tempfile.TemporaryDirectory() as out:
