@@ -15,7 +15,7 @@ Vector6d spring_gradient(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
 Eigen::Matrix3d projected_spring_stiffness(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
                                            const Spring& spring, const TensionTable& table, double slack_axial) {
   SpringStiffness k = spring_stiffness_parts(xa, xb, spring, table);
-  k.axial = k.axial > 0.0 ? k.axial : slack_axial;
+  if (k.axial <= 0.0) k.axial = slack_axial;  // (a NaN stays, for the run to report)
   k.transverse = std::max(k.transverse, 0.0);
   return k.matrix();
 }

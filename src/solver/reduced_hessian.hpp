@@ -20,7 +20,6 @@ namespace fabform {
 /// and are never dropped, so the matrix's pattern stays the same from one Newton step to the next.
 class ReducedHessian {
  public:
-
   /// `lagged` is a term Newton holds for one iteration (friction), added to the model's own.
   /// `slack_share`: what a slack spring keeps of its table's steepest slope along it
   /// (StiffnessSink::slack_share); 0 assembles ∂²Π/∂x² itself, projected.
