@@ -45,8 +45,8 @@ import dataclasses
 import json
 import math
 import os
-import re
 import pathlib
+import re
 import shutil
 import statistics
 import sys
