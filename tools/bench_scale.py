@@ -243,10 +243,14 @@ def folder(build: Build, n: int, out: pathlib.Path) -> pathlib.Path:
     return out / f"N{n}" / f"{build.label}-T{build.threads}"
 
 
+def seeded(args, build: Build) -> bool:
+    """Whether the build runs once per seed: the baseline, which may predate the keys, does not."""
+    return bool(args.seeds) and build.label != "baseline"
+
+
 def seed_sets(args, build: Build, run: int) -> tuple:
-    """The --set options of a size's run-th run (from 0): its seed's imperfection, if seeded.
-    The baseline, which may predate these keys, runs unseeded."""
-    if not args.seeds or build.label == "baseline":
+    """The --set options of a size's run-th run (from 0): its seed's imperfection, if seeded."""
+    if not seeded(args, build):
         return ()
     return (f"initial.perturbation_m={args.perturbation!r}", f"initial.seed={args.seeds[run]}")
 
@@ -256,7 +260,7 @@ def measure_size(n: int, build: Build, args, out: pathlib.Path) -> dict:
     their medians."""
     runs, spent = [], 0.0
     row = {"N": n, "build": build.label, "threads": build.threads}
-    wanted = len(args.seeds) if args.seeds and build.label != "baseline" else args.runs
+    wanted = len(args.seeds) if seeded(args, build) else args.runs
     while len(runs) < wanted:
         left = args.timeout - spent
         if runs and runs[-1]["wall_s"] > left:  # one more would not fit in the timeout
@@ -298,8 +302,9 @@ def add_measured_distance(row: dict, build: Build, args, out: pathlib.Path) -> N
 def measure(args, out: pathlib.Path) -> list:
     """Every size with every build, smaller sizes first; a build over the timeout runs no larger size."""
     rows = []
+    every = builds(args, out)  # the baseline's scene copy written once
     for n in args.sizes:
-        for build in builds(args, out):
+        for build in every:
             reached = [r for r in rows if r["status"] == "over the timeout"
                        and (r["build"], r["threads"]) == (build.label, build.threads)]
             if reached:
