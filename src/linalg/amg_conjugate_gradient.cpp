@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fabform/error.hpp"
+#include "linalg/sparse_transpose.hpp"
 
 namespace fabform {
 
@@ -159,7 +160,7 @@ AmgConjugateGradient::~AmgConjugateGradient() = default;
 namespace {
 
 std::unique_ptr<IjMatrix> to_hypre(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& rows) {
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> full = lower.selfadjointView<Eigen::Lower>();
+  const RowMatrix full = whole_symmetric(lower);
   const int n = static_cast<int>(full.rows());
   std::vector<int> sizes(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) sizes[i] = full.outerIndexPtr()[i + 1] - full.outerIndexPtr()[i];

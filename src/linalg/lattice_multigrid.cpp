@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "linalg/galerkin_product.hpp"
+#include "linalg/sparse_transpose.hpp"
 
 namespace fabform {
 
@@ -61,7 +62,7 @@ void LatticeMultigrid::set_matrix(const Eigen::SparseMatrix<double>& lower, cons
   // elements), so no level's matrices are ever held twice. They are kept only once the
   // hierarchy is whole, so a failure leaves none.
   std::deque<Level> levels;
-  RowMatrix a = lower.selfadjointView<Eigen::Lower>();
+  RowMatrix a = whole_symmetric(lower);
   RowMatrix p = unknown_prolongation(unknowns);
   std::array<int, 2> size = coarser_lattice(unknowns.lattice_size);
   std::vector<std::array<int, 2>> place = unknown_places(unknowns);
@@ -69,7 +70,7 @@ void LatticeMultigrid::set_matrix(const Eigen::SparseMatrix<double>& lower, cons
     Level& level = levels.emplace_back();
     level.a.swap(a);
     level.prolongation.swap(p);
-    level.restriction = level.prolongation.transpose();
+    level.restriction = transposed(level.prolongation);
     RowMatrix coarse = galerkin_product(level.restriction, level.a, level.prolongation);
     level.smoother = LineGaussSeidel(level.a, place);
     place = level_places(size, coarse.rows());

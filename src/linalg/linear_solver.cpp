@@ -27,10 +27,12 @@ bool linear_method_named(const std::string& name, LinearMethod* method) {
   return false;
 }
 
-LinearMethod concrete_method(LinearMethod method, int unknowns, bool lattice) {
+LinearMethod concrete_method(LinearMethod method, const LinearSystemShape& shape) {
   if (method != LinearMethod::automatic) return method;
-  const int from = lattice ? kLatticeMultigridMinUnknowns : kAlgebraicMultigridMinUnknowns;
-  return unknowns >= from ? LinearMethod::multigrid : LinearMethod::cholesky;
+  const int from = !shape.lattice ? kAlgebraicMultigridMinUnknowns
+                   : shape.bending ? kLatticeMultigridMinUnknowns
+                                   : kMembraneMultigridMinUnknowns;
+  return shape.unknowns >= from ? LinearMethod::multigrid : LinearMethod::cholesky;
 }
 
 namespace {

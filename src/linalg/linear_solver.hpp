@@ -24,17 +24,25 @@ std::string to_string(LinearMethod method);
 /// The method a name gives; false for an unknown name.
 bool linear_method_named(const std::string& name, LinearMethod* method);
 
-/// From this many unknowns `automatic` takes multigrid: on a lattice, where it is geometric (even
-/// with the factorisation at 101 × 101 nodes on the dome and faster from 201 × 201, README; the
-/// switch sits above the shipped dome's 118 803 unknowns so that its goldens keep the
-/// factorisation they were made with), and elsewhere, where it is BoomerAMG (no faster than the
-/// factorisation below a million).
+/// From this many unknowns `automatic` takes multigrid. On a lattice it is geometric: for a
+/// membrane (no bending term) from 10 000 (on the dome 1.5 × faster than the factorisation at
+/// 201 × 201 nodes and at the 51 × 51 grid of a continuation, README), for a fabric that bends
+/// from 200 000, as bending's fourth-order stiffness is what line smoothing and bilinear
+/// interpolation serve worst (the Cusick drape at 80 divisions: 3.6 × slower than the
+/// factorisation). Elsewhere it is BoomerAMG, no faster than the factorisation below a million.
+constexpr int kMembraneMultigridMinUnknowns = 10'000;
 constexpr int kLatticeMultigridMinUnknowns = 200'000;
 constexpr int kAlgebraicMultigridMinUnknowns = 1'000'000;
 
-/// The method `method` stands for with this many unknowns, on a lattice or not (itself unless
-/// automatic).
-LinearMethod concrete_method(LinearMethod method, int unknowns, bool lattice);
+/// What `automatic` chooses by.
+struct LinearSystemShape {
+  int unknowns = 0;
+  bool lattice = false;  // the nodes lie on a lattice (multigrid would be geometric)
+  bool bending = false;  // the model has a bending term
+};
+
+/// The method `method` stands for with a system of this shape (itself unless automatic).
+LinearMethod concrete_method(LinearMethod method, const LinearSystemShape& shape);
 
 /// What a solver may know of the unknowns besides the matrix.
 struct UnknownLayout {

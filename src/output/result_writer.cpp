@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -20,6 +22,8 @@
 #include "fabform/output/results_folder.hpp"
 #include "fabform/output/run_figures.hpp"
 #include "fabform/solver/solver_registry.hpp"
+#include "fabform/thread_count.hpp"
+#include "linalg/parallel_failure.hpp"
 
 namespace fabform {
 namespace {
@@ -331,17 +335,50 @@ std::vector<Eigen::Vector3d> flat_blank(const RunRecord& run) {
   return flat;
 }
 
-// The flat-formed map's files (print_map_files.hpp), for a state without NaN or infinity.
-void add_print_map_files(const RunRecord& run, std::vector<ResultFile>& files) {
+// A result file's name and what makes its bytes.
+using FileMaker = std::pair<std::string, std::function<std::string()>>;
+
+// The flat blank and its map to the formed state (print_map_files.hpp).
+struct PrintMapParts {
+  std::vector<Eigen::Vector3d> flat;
+  PrintMap map;
+};
+
+// None for a state with NaN or infinity.
+std::optional<PrintMapParts> print_map_parts(const RunRecord& run) {
   for (const auto& p : run.state.x)
-    if (!p.allFinite()) return;
-  const std::vector<Eigen::Vector3d> flat = flat_blank(run);
-  const PrintMap map = print_map(run.model.fabric, flat, run.state.x);
-  files.emplace_back("formed.obj", formed_obj(map, run.state.x));
-  files.emplace_back("formed.mtl", map_mtl("formed"));
-  files.emplace_back("blank.obj", blank_obj(map, flat));
-  files.emplace_back("blank.mtl", map_mtl("blank"));
-  files.emplace_back("uv_grid.png", png_bytes(checkerboard(512, 512, 16)));
+    if (!p.allFinite()) return std::nullopt;
+  std::vector<Eigen::Vector3d> flat = flat_blank(run);
+  PrintMap map = print_map(run.model.fabric, flat, run.state.x);
+  return PrintMapParts{std::move(flat), std::move(map)};
+}
+
+void add_print_map_makers(const RunRecord& run, const PrintMapParts& parts, std::vector<FileMaker>& makers) {
+  makers.emplace_back("formed.obj", [&] { return formed_obj(parts.map, run.state.x); });
+  makers.emplace_back("formed.mtl", [] { return map_mtl("formed"); });
+  makers.emplace_back("blank.obj", [&] { return blank_obj(parts.map, parts.flat); });
+  makers.emplace_back("blank.mtl", [] { return map_mtl("blank"); });
+  makers.emplace_back("uv_grid.png", [] { return png_bytes(checkerboard(512, 512, 16)); });
+}
+
+// The files, made on every thread the run has: a million nodes' text is half a gigabyte, and
+// each file is made the same way on any thread. In the makers' order.
+std::vector<ResultFile> made_at_once(const std::vector<FileMaker>& makers) {
+  std::vector<ResultFile> files(makers.size());
+  ParallelFailure failure;
+  const auto count = static_cast<int>(makers.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_in_use())
+  for (int k = 0; k < count; ++k) {
+    if (failure.caught()) continue;
+    const auto i = static_cast<std::size_t>(k);
+    try {
+      files[i] = {makers[i].first, makers[i].second()};
+    } catch (...) {
+      failure.capture();
+    }
+  }
+  failure.rethrow();
+  return files;
 }
 
 // VTK's XML polygon data, ASCII: what a ParaView collection (.pvd) plays as a series. A value
@@ -408,26 +445,29 @@ void write_results(const std::string& dir, const RunRecord& run) {
   const bool in_steps = run.model.load_steps() > 0;
   const StateFigures state = state_figures(run);
   const CellFigures cells = cell_figures(run);
-  std::vector<ResultFile> files = {{"convergence.csv", convergence_csv(run.summary, in_steps)},
-                                   {"fabric.obj", fabric_obj(run)},
-                                   {"fabric.vtk", fabric_vtk(run, state, cells)},
-                                   {"result.json", result_json(run, state, cells)}};
+  // The largest files first, so that the last file a thread takes is a small one.
+  std::vector<FileMaker> makers = {{"fabric.vtk", [&] { return fabric_vtk(run, state, cells); }},
+                                   {"fabric.obj", [&] { return fabric_obj(run); }},
+                                   {"convergence.csv", [&] { return convergence_csv(run.summary, in_steps); }},
+                                   {"result.json", [&] { return result_json(run, state, cells); }}};
   const Termination t = run.summary.termination;
+  std::optional<PrintMapParts> map;
+  if (t != Termination::running) map = print_map_parts(run);
+  if (map) add_print_map_makers(run, *map, makers);
   if (t != Termination::converged && t != Termination::numerical_failure)
-    files.emplace_back("checkpoint.bin", checkpoint_bytes(run.state, run.summary));
+    makers.emplace_back("checkpoint.bin", [&] { return checkpoint_bytes(run.state, run.summary); });
   if (t != Termination::running && !run.model.bodies.empty()) {  // checkpoints stay light
-    files.emplace_back("bodies.obj", bodies_obj(run));
-    files.emplace_back("bodies.vtk", bodies_vtk(run, state.pressure));
+    makers.emplace_back("bodies.obj", [&] { return bodies_obj(run); });
+    makers.emplace_back("bodies.vtk", [&] { return bodies_vtk(run, state.pressure); });
   }
-  if (t != Termination::running) add_print_map_files(run, files);
   if (in_steps && run.steps) {
     for (const StepResult& step : *run.steps) {
-      files.emplace_back(step_file("fabric", step.step), step.fabric_vtp);
-      files.emplace_back(step_file("bodies", step.step), step.bodies_vtp);
+      makers.emplace_back(step_file("fabric", step.step), [&step] { return step.fabric_vtp; });
+      makers.emplace_back(step_file("bodies", step.step), [&step] { return step.bodies_vtp; });
     }
-    files.emplace_back("fabric_steps.pvd", steps_pvd(*run.steps));
+    makers.emplace_back("fabric_steps.pvd", [&] { return steps_pvd(*run.steps); });
   }
-  publish_results(dir, files);
+  publish_results(dir, made_at_once(makers));
 }
 
 StepResult step_result(const RunRecord& run, int step) {

@@ -25,16 +25,25 @@ TEST(LinearSolver, NamesRoundTrip) {
 }
 
 TEST(LinearSolver, AutoTurnsToMultigridAtItsSize) {
-  for (const bool lattice : {true, false}) {
-    const int from = lattice ? kLatticeMultigridMinUnknowns : kAlgebraicMultigridMinUnknowns;
-    EXPECT_EQ(concrete_method(LinearMethod::automatic, from - 1, lattice), LinearMethod::cholesky);
-    EXPECT_EQ(concrete_method(LinearMethod::automatic, from, lattice), LinearMethod::multigrid);
-    EXPECT_EQ(concrete_method(LinearMethod::cholesky, 1 << 30, lattice), LinearMethod::cholesky);
-    EXPECT_EQ(concrete_method(LinearMethod::multigrid, 3, lattice), LinearMethod::multigrid);
+  struct Case {
+    bool lattice, bending;
+    int from;
+  };
+  for (const Case& c : {Case{true, false, kMembraneMultigridMinUnknowns}, Case{true, true, kLatticeMultigridMinUnknowns},
+                        Case{false, false, kAlgebraicMultigridMinUnknowns},
+                        Case{false, true, kAlgebraicMultigridMinUnknowns}}) {
+    SCOPED_TRACE(testing::Message() << "lattice " << c.lattice << ", bending " << c.bending);
+    const auto of = [&](int unknowns) { return LinearSystemShape{unknowns, c.lattice, c.bending}; };
+    EXPECT_EQ(concrete_method(LinearMethod::automatic, of(c.from - 1)), LinearMethod::cholesky);
+    EXPECT_EQ(concrete_method(LinearMethod::automatic, of(c.from)), LinearMethod::multigrid);
+    EXPECT_EQ(concrete_method(LinearMethod::cholesky, of(1 << 30)), LinearMethod::cholesky);
+    EXPECT_EQ(concrete_method(LinearMethod::multigrid, of(3)), LinearMethod::multigrid);
   }
-  // The dome scene as shipped (201 × 201 nodes, its perimeter held) stays on the factorisation
-  // its goldens were made with.
-  EXPECT_LT(3 * 199 * 199, kLatticeMultigridMinUnknowns);
+  // The dome as shipped (201 × 201 nodes, its perimeter held, a membrane) takes multigrid; the
+  // 51 × 51 grid its continuation starts from, the factorisation. A node on the body keeps two
+  // of its three unknowns.
+  EXPECT_GE(2 * 199 * 199, kMembraneMultigridMinUnknowns);
+  EXPECT_LT(3 * 49 * 49, kMembraneMultigridMinUnknowns);
   EXPECT_THROW(make_linear_solver(LinearMethod::automatic), std::invalid_argument);
 }
 
