@@ -39,6 +39,11 @@ def first_iteration_at_or_below(history: pathlib.Path, threshold: float) -> str:
     return "never"
 
 
+def figure(value, spec: str) -> str:
+    """A result.json figure as the table shows it; null (none to measure: no body) as a dash."""
+    return "–" if value is None else format(value, spec)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=str(ROOT / "results"), help="folder for the runs")
@@ -52,7 +57,7 @@ def main() -> None:
         seed_it = first_iteration_at_or_below(out / "convergence.csv", SEED_MOLD_CRITERION_N)
         print(f"| {scene.stem} | {r['nodes']} | {r['tolerance_N']:.3g} | {r['iterations']} | "
               f"{r['wall_seconds']:.1f} | {r['residual_recomputed_N']:.3g} | {seed_it} | "
-              f"{r['contact_nodes']} | {r['max_penetration_m']:.2g} |")
+              f"{r['contact_nodes']} | {figure(r['max_penetration_m'], '.2g')} |")
 
 
 if __name__ == "__main__":
