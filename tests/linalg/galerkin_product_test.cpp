@@ -7,30 +7,20 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
 #include "fabform/thread_count.hpp"
 #include "linalg/lattice_prolongation.hpp"
 #include "support/grid_stiffness.hpp"
+#include "support/random_sparse.hpp"
 
 namespace fabform {
 namespace {
 
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-RowMatrix random_sparse(Eigen::Index rows, Eigen::Index columns, int per_row, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<Eigen::Index> column(0, columns - 1);
-  std::uniform_real_distribution<double> value(-1.0, 1.0);
-  std::vector<Eigen::Triplet<double>> entries;
-  for (Eigen::Index r = 0; r < rows; ++r)
-    for (int k = 0; k < per_row; ++k) entries.emplace_back(r, column(rng), value(rng));
-  RowMatrix m(rows, columns);
-  m.setFromTriplets(entries.begin(), entries.end());
-  return m;
-}
+using test::random_sparse;
 
 // Entry by entry within `relative` of the largest entry of |R||A||P| (what rounding scales with).
 void expect_product(const RowMatrix& r, const RowMatrix& a, const RowMatrix& p, double relative) {

@@ -8,29 +8,20 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
 #include "fabform/thread_count.hpp"
 #include "linalg/lattice_prolongation.hpp"
 #include "support/grid_stiffness.hpp"
+#include "support/random_sparse.hpp"
 
 namespace fabform {
 namespace {
 
-// Each row `per_row` entries at random columns (repeats summed), some rows left empty.
+// Some rows left empty, and so, on wide shapes, some columns.
 RowMatrix random_sparse(Eigen::Index rows, Eigen::Index columns, int per_row, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<Eigen::Index> column(0, columns - 1);
-  std::uniform_real_distribution<double> value(-1.0, 1.0);
-  std::vector<Eigen::Triplet<double>> entries;
-  for (Eigen::Index r = 0; r < rows; ++r)
-    if (r % 7 != 3)
-      for (int k = 0; k < per_row; ++k) entries.emplace_back(r, column(rng), value(rng));
-  RowMatrix m(rows, columns);
-  m.setFromTriplets(entries.begin(), entries.end());
-  return m;
+  return test::random_sparse(rows, columns, per_row, seed, 7);
 }
 
 bool same_bits(const RowMatrix& x, const RowMatrix& y) {
