@@ -70,7 +70,8 @@ void LatticeMultigrid::set_matrix(const Eigen::SparseMatrix<double>& lower, cons
     Level& level = levels.emplace_back();
     level.a.swap(a);
     level.prolongation.swap(p);
-    level.restriction = transposed(level.prolongation);
+    RowMatrix restriction = transposed(level.prolongation);
+    level.restriction.swap(restriction);
     RowMatrix coarse = galerkin_product(level.restriction, level.a, level.prolongation);
     level.smoother = LineGaussSeidel(level.a, place);
     place = level_places(size, coarse.rows());

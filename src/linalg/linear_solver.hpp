@@ -25,11 +25,13 @@ std::string to_string(LinearMethod method);
 bool linear_method_named(const std::string& name, LinearMethod* method);
 
 /// From this many unknowns `automatic` takes multigrid. On a lattice it is geometric: for a
-/// membrane (no bending term) from 10 000 (on the dome 1.5 × faster than the factorisation at
-/// 201 × 201 nodes and at the 51 × 51 grid of a continuation, README), for a fabric that bends
-/// from 200 000, as bending's fourth-order stiffness is what line smoothing and bilinear
-/// interpolation serve worst (the Cusick drape at 80 divisions: 3.6 × slower than the
-/// factorisation). Elsewhere it is BoomerAMG, no faster than the factorisation below a million.
+/// membrane (no bending term) from 10 000 (on the dome 1.8 × faster than the factorisation at
+/// 201 × 201 nodes, and at 101 × 101 too; README), below which the shipped scenes keep the
+/// factorisation their goldens were made with (there multigrid was 4 × slower on the Cusick
+/// drape and at most 1.2 × faster elsewhere); for a fabric that bends from 200 000, as bending's
+/// fourth-order stiffness is what line smoothing and bilinear interpolation serve worst (the
+/// Cusick drape at 80 divisions: 3.6 × slower). Elsewhere it is BoomerAMG, no faster than the
+/// factorisation below a million.
 constexpr int kMembraneMultigridMinUnknowns = 10'000;
 constexpr int kLatticeMultigridMinUnknowns = 200'000;
 constexpr int kAlgebraicMultigridMinUnknowns = 1'000'000;

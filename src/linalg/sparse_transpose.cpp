@@ -1,10 +1,9 @@
 #include "linalg/sparse_transpose.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <vector>
-
-#include <omp.h>
 
 #include "fabform/thread_count.hpp"
 
@@ -45,7 +44,12 @@ std::vector<Eigen::Index> bands(const Outers& m, int threads) {
 // counted for it beforehand, so the result does not depend on the threads.
 template <class Crossed, class Kept>
 RowMatrix gathered(const Outers& m, Eigen::Index rows, Eigen::Index columns, Crossed crossed, Kept kept) {
-  const int threads = m.start[m.count] >= kMinParallelItems ? threads_in_use() : 1;
+  // Each thread holds a count per row: no more threads than entries a row, so that the counts
+  // never outnumber the entries.
+  const long long entries = m.start[m.count];
+  const int threads = entries < kMinParallelItems || rows == 0
+                          ? 1
+                          : static_cast<int>(std::clamp<long long>(entries / rows, 1, threads_in_use()));
   const std::vector<Eigen::Index> band = bands(m, threads);
   // Per thread and row: first its entries crossed there, then where the next one goes.
   std::vector<std::vector<int>> place(static_cast<std::size_t>(threads), std::vector<int>(static_cast<std::size_t>(rows), 0));

@@ -3,8 +3,9 @@
 // and its expansion of a symmetric matrix's lower triangle to the whole, run on one thread:
 // on the dome at a million nodes, each Newton step's expansion of the finest matrix and
 // transposes of the prolongations were the largest serial part of the multigrid's set-up.
-// Each thread scatters the rows of its own band into places counted for it in advance, so the
-// result is the same, bit for bit and entry for entry, on any number of threads: Eigen's.
+// Each thread scatters the entries of its own band of outer vectors (rows of a row-major matrix,
+// columns of a column-major one) into places counted for it in advance, so the result is the
+// same, bit for bit and entry for entry, on any number of threads: Eigen's.
 #include <Eigen/SparseCore>
 
 namespace fabform {

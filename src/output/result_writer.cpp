@@ -361,13 +361,13 @@ void add_print_map_makers(const RunRecord& run, const PrintMapParts& parts, std:
   makers.emplace_back("uv_grid.png", [] { return png_bytes(checkerboard(512, 512, 16)); });
 }
 
-// The files, made on every thread the run has: a million nodes' text is half a gigabyte, and
-// each file is made the same way on any thread. In the makers' order.
-std::vector<ResultFile> made_at_once(const std::vector<FileMaker>& makers) {
+// The files, made on every thread the run has when its fabric is large (a million nodes' text
+// is half a gigabyte); each file is made the same way on any thread. In the makers' order.
+std::vector<ResultFile> made_at_once(const std::vector<FileMaker>& makers, int nodes) {
   std::vector<ResultFile> files(makers.size());
   ParallelFailure failure;
   const auto count = static_cast<int>(makers.size());
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_in_use())
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_in_use()) if (nodes >= kMinParallelItems)
   for (int k = 0; k < count; ++k) {
     if (failure.caught()) continue;
     const auto i = static_cast<std::size_t>(k);
@@ -445,15 +445,16 @@ void write_results(const std::string& dir, const RunRecord& run) {
   const bool in_steps = run.model.load_steps() > 0;
   const StateFigures state = state_figures(run);
   const CellFigures cells = cell_figures(run);
-  // The largest files first, so that the last file a thread takes is a small one.
-  std::vector<FileMaker> makers = {{"fabric.vtk", [&] { return fabric_vtk(run, state, cells); }},
-                                   {"fabric.obj", [&] { return fabric_obj(run); }},
-                                   {"convergence.csv", [&] { return convergence_csv(run.summary, in_steps); }},
-                                   {"result.json", [&] { return result_json(run, state, cells); }}};
+  // The largest files first (fabric.vtk, then the print map's), so that the last file a thread
+  // takes is a small one.
+  std::vector<FileMaker> makers = {{"fabric.vtk", [&] { return fabric_vtk(run, state, cells); }}};
   const Termination t = run.summary.termination;
   std::optional<PrintMapParts> map;
   if (t != Termination::running) map = print_map_parts(run);
   if (map) add_print_map_makers(run, *map, makers);
+  makers.emplace_back("fabric.obj", [&] { return fabric_obj(run); });
+  makers.emplace_back("convergence.csv", [&] { return convergence_csv(run.summary, in_steps); });
+  makers.emplace_back("result.json", [&] { return result_json(run, state, cells); });
   if (t != Termination::converged && t != Termination::numerical_failure)
     makers.emplace_back("checkpoint.bin", [&] { return checkpoint_bytes(run.state, run.summary); });
   if (t != Termination::running && !run.model.bodies.empty()) {  // checkpoints stay light
@@ -467,7 +468,7 @@ void write_results(const std::string& dir, const RunRecord& run) {
     }
     makers.emplace_back("fabric_steps.pvd", [&] { return steps_pvd(*run.steps); });
   }
-  publish_results(dir, made_at_once(makers));
+  publish_results(dir, made_at_once(makers, run.model.node_count()));
 }
 
 StepResult step_result(const RunRecord& run, int step) {

@@ -64,12 +64,16 @@ constexpr double kMeasuringForcing = 1e-4;
 constexpr double kEstimateForcing = 1e-2;
 
 // How tightly a step is solved: to the inexact-Newton sequence's η (NewtonStep::forcing) capped
-// at `loosest`, or to `loosest` itself when `fixed` (an estimate, which does not move the state
-// and so must not move the sequence either); `measuring` takes the exact matrix.
+// at `loosest`, or to `loosest` itself when `fixed`; `measuring` takes the exact matrix.
 struct StepAccuracy {
-  double loosest = kMaxForcing;
-  bool measuring = false;
-  bool fixed = false;
+  double loosest;
+  bool measuring;
+  bool fixed;
+
+  /// A step of the sequence, which a run that stops in metres measures (`measuring`).
+  static StepAccuracy in_sequence(double loosest, bool measuring) { return {loosest, measuring, false}; }
+  /// The final estimate's step after loose steps: to kEstimateForcing, on the exact matrix.
+  static StepAccuracy loose_estimate() { return {kEstimateForcing, true, true}; }
 };
 
 std::vector<Eigen::Vector3d> node_forces(const Model& model, const std::vector<Eigen::Vector3d>& x) {
@@ -153,7 +157,7 @@ class NewtonStep {
   double next_step_size() {
     const std::vector<NodeContact> contact = state_.contact;
     const std::optional<Proposal> p =
-        propose(loose_ ? StepAccuracy{kEstimateForcing, true, true} : StepAccuracy{kMeasuringForcing, true, false});
+        propose(loose_ ? StepAccuracy::loose_estimate() : StepAccuracy::in_sequence(kMeasuringForcing, true));
     state_.contact = contact;
     return p ? largest_move(p->steps) : std::nan("");
   }
@@ -208,8 +212,9 @@ class NewtonStep {
                                        const FreeDirections& directions, double eta) {
     const UnknownLayout layout = unknown_layout(directions, model_.fabric);
     if (!linear_)
-      linear_ = make_linear_solver(concrete_method(
-          linear_method_, {directions.unknowns(), layout.lattice.has_value(), model_.resists_bending()}));
+      linear_ = make_linear_solver(concrete_method(linear_method_, LinearSystemShape{/*unknowns=*/directions.unknowns(),
+                                                                                    /*lattice=*/layout.lattice.has_value(),
+                                                                                    /*bending=*/model_.resists_bending()}));
     const Eigen::VectorXd diagonal = h.diagonal();
     const double mean = h.diagonal().sum() / directions.used;  // summed in the sparse order, as ever
     const double scale = mean > 0.0 ? mean : 1.0;
@@ -310,7 +315,7 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
     // releases nodes that pull off a body; a run that stops here keeps the state's own contact.
     std::vector<NodeContact> contact;
     if (options.tolerance_m > 0.0) contact = state.contact;
-    const std::optional<Proposal> proposal = step.propose({loosest, options.tolerance_m > 0.0, false});
+    const std::optional<Proposal> proposal = step.propose(StepAccuracy::in_sequence(loosest, options.tolerance_m > 0.0));
     step_sizes.push_back(proposal ? largest_move(proposal->steps) : std::nan(""));
     const double distance = step.steps_were_loose() ? std::nan("") : newton_position_error(step_sizes);
     if (options.tolerance_m > 0.0 && record_position_error(summary, distance)) {
@@ -322,7 +327,7 @@ Summary newton(const Model& model, SolverState& state, const NewtonOptions& opti
     return StepOutcome::stalled;
   };
   steps.measure = [&] { return measure_state(model, state); };
-  // One more factorisation (or tight solve), of the final state, without moving it.
+  // One more factorisation (or solve), of the final state, without moving it.
   if (options.final_estimate)
     steps.final_position_error = [&](const Summary& summary) {
       const double size = step.next_step_size();

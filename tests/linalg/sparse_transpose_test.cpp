@@ -1,5 +1,5 @@
 // The parallel transposes against Eigen's own conversions (the brute force here): the same
-// matrix, entry for entry and bit for bit, on one thread and on two, on shapes from empty to
+// matrix, entry for entry and bit for bit, on one thread and on several, on shapes from empty to
 // the sizes where the work is shared (8192 entries), square and not, with rows and columns
 // left empty; a symmetric matrix's lower triangle expanded as Eigen's selfadjointView expands
 // it, entries above the diagonal ignored; a matrix that is not square refused.
@@ -31,11 +31,12 @@ bool same_bits(const RowMatrix& x, const RowMatrix& y) {
          std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.rows() + 1, y.outerIndexPtr());
 }
 
-// Runs `check` on one thread and on two, the run's own count put back after.
+// Runs `check` on one thread and on two, three and five (bands with both edges inside the
+// matrix; more threads than cores is no matter here), the run's own count put back after.
 template <class Check>
-void on_one_thread_and_two(Check check) {
+void on_one_thread_and_more(Check check) {
   const int saved = threads_in_use();
-  for (const int threads : {1, 2}) {
+  for (const int threads : {1, 2, 3, 5}) {
     SCOPED_TRACE(testing::Message() << threads << " thread(s)");
     use_threads(threads);
     check();
@@ -49,7 +50,7 @@ TEST(SparseTranspose, IsEigensTransposeOnEveryShape) {
     int per_row;
   };
   static_assert(3000 * 4 > kMinParallelItems, "the largest shape is shared among threads");
-  on_one_thread_and_two([] {
+  on_one_thread_and_more([] {
     for (const Shape s : {Shape{0, 0, 0}, Shape{1, 1, 1}, Shape{1, 9, 4}, Shape{9, 1, 2}, Shape{40, 40, 5},
                           Shape{3000, 700, 4}, Shape{700, 3000, 16}})
       for (unsigned seed = 1; seed <= 2; ++seed) {
@@ -64,7 +65,7 @@ TEST(SparseTranspose, TransposesTheLatticeInterpolation) {
   // The restriction the multigrid keeps, on a lattice large enough to share.
   const RowMatrix p = lattice_prolongation({129, 129});
   ASSERT_GE(p.nonZeros(), kMinParallelItems);
-  on_one_thread_and_two([&] { EXPECT_TRUE(same_bits(transposed(p), RowMatrix(p.transpose()))); });
+  on_one_thread_and_more([&] { EXPECT_TRUE(same_bits(transposed(p), RowMatrix(p.transpose()))); });
 }
 
 TEST(SparseTranspose, TakesAnUncompressedMatrix) {
@@ -80,7 +81,7 @@ TEST(SparseTranspose, TakesAnUncompressedMatrix) {
 }
 
 TEST(WholeSymmetric, IsEigensSelfadjointExpansion) {
-  on_one_thread_and_two([] {
+  on_one_thread_and_more([] {
     for (const int side : {1, 4, 40}) {  // 40 × 40 nodes: 120 unknowns a row of nodes, 28 000 entries
       SCOPED_TRACE(testing::Message() << side << " x " << side << " nodes");
       const Eigen::SparseMatrix<double> lower = test::grid_stiffness(side, 0.1);
@@ -93,7 +94,7 @@ TEST(WholeSymmetric, IsEigensSelfadjointExpansion) {
 TEST(WholeSymmetric, IgnoresEntriesAboveTheDiagonalAndMissingDiagonals) {
   // A lower triangle with holes on the diagonal, and entries above it that the expansion must
   // not read (Eigen's selfadjointView does not).
-  on_one_thread_and_two([] {
+  on_one_thread_and_more([] {
     for (const Eigen::Index n : {Eigen::Index{5}, Eigen::Index{3000}}) {
       SCOPED_TRACE(testing::Message() << n << " unknowns");
       const Eigen::SparseMatrix<double> any = random_sparse(n, n, 6, 11);
@@ -108,6 +109,15 @@ TEST(WholeSymmetric, IgnoresEntriesAboveTheDiagonalAndMissingDiagonals) {
       }
     }
   });
+}
+
+TEST(WholeSymmetric, TakesAnUncompressedMatrix) {
+  Eigen::SparseMatrix<double> lower = test::grid_stiffness(4, 0.1);
+  lower.coeffRef(47, 0) = 0.25;  // an insertion leaves Eigen's matrix uncompressed
+  ASSERT_FALSE(lower.isCompressed());
+  Eigen::SparseMatrix<double> compressed = lower;
+  compressed.makeCompressed();
+  EXPECT_TRUE(same_bits(whole_symmetric(lower), RowMatrix(compressed.selfadjointView<Eigen::Lower>())));
 }
 
 TEST(WholeSymmetric, RefusesAMatrixThatIsNotSquare) {

@@ -43,7 +43,7 @@ struct EquilibriumReport {
   int contact_nodes = 0;
   int sliding_nodes = 0;  // pressed on a body, R* at μ·λ (within e): it slides or is about to; μ = 0 slides
   int stuck_nodes = 0;    // pressed on a body, R* inside the cone by more than e: friction holds it
-  double max_penetration_m = 0.0;      // deepest node inside any body (0 when none is)
+  double max_penetration_m = 0.0;      // deepest node in a body; below 0: the closest one's clearance; −∞: no body
   SpringCuts spring_cuts;              // springs reaching into a body between their nodes
 };
 

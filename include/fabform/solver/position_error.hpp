@@ -5,9 +5,9 @@
 // linear problem; newton.cpp takes it, as it holds the factorisation); but while nodes still land
 // on or leave a body its tail converges linearly, each step ρ times the last, and the steps still
 // to come sum to |δ|/(1 − ρ), ρ read from the last steps' sizes (on the dome at 201 × 201 nodes,
-// |δ| alone was a quarter of the distance). δ is solved tightly (newton.cpp's kMeasuringForcing)
-// even when the steps are inexact (multigrid's conjugate gradients, loose far from the rest); a
-// loose step's size says little, so after loose steps ρ is read from ‖V‖∞ instead. relax and
+// |δ| alone was a quarter of the distance). After inexact steps (multigrid's conjugate
+// gradients, loose far from the rest) a loose step's size says little, so ρ is read from ‖V‖∞
+// instead, and δ is solved more tightly than they were (newton.cpp's kEstimateForcing). relax and
 // dynamic have no matrix, and a node's |V_i| over its own stiffness says little (the slow shapes
 // they leave last are held by the fabric's tension alone: on the dome, 530 to 700 times further
 // than that); their tail converges linearly, and the moves still to come sum to Δ·ρ/(1 − ρ), Δ the
@@ -40,7 +40,7 @@ double rate_position_error(const std::vector<IterationRecord>& history, double l
 
 /// newton's estimate when its steps were solved loosely (inexact Newton far from the rest: a
 /// loose step leaves out the slow shapes, so its size says little of the distance): |δ|/(1 − ρ),
-/// `step_m` the step from the current state solved tightly, ρ = (‖V‖∞ now / ‖V‖∞ w iterations
+/// `step_m` the step from the current state solved more tightly, ρ = (‖V‖∞ now / ‖V‖∞ w iterations
 /// back)^(1/w), w the window or half the history. NaN while the history is under two iterations
 /// or ‖V‖∞ is not falling.
 double inexact_newton_position_error(double step_m, const std::vector<IterationRecord>& history);
