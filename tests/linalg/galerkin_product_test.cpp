@@ -13,7 +13,7 @@
 #include "fabform/thread_count.hpp"
 #include "linalg/lattice_prolongation.hpp"
 #include "support/grid_stiffness.hpp"
-#include "support/random_sparse.hpp"
+#include "support/sparse_matrices.hpp"
 
 namespace fabform {
 namespace {
@@ -21,6 +21,7 @@ namespace {
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 using test::random_sparse;
+using test::same_bits;
 
 // Entry by entry within `relative` of the largest entry of |R||A||P| (what rounding scales with).
 void expect_product(const RowMatrix& r, const RowMatrix& a, const RowMatrix& p, double relative) {
@@ -45,13 +46,6 @@ TEST(GalerkinProduct, IsTheProductOfRandomSparseFactors) {
     const RowMatrix r = random_sparse(17, 60, 4, seed + 20);  // need not be Pᵀ
     expect_product(r, a, p, 1e-14);
   }
-}
-
-bool same_bits(const RowMatrix& x, const RowMatrix& y) {
-  return x.rows() == y.rows() && x.cols() == y.cols() && x.nonZeros() == y.nonZeros() &&
-         std::equal(x.valuePtr(), x.valuePtr() + x.nonZeros(), y.valuePtr()) &&
-         std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr()) &&
-         std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.rows() + 1, y.outerIndexPtr());
 }
 
 TEST(GalerkinProduct, GivesEigensBitsWhateverTheBlocksAndThreads) {

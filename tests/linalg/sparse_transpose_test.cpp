@@ -14,21 +14,16 @@
 #include "fabform/thread_count.hpp"
 #include "linalg/lattice_prolongation.hpp"
 #include "support/grid_stiffness.hpp"
-#include "support/random_sparse.hpp"
+#include "support/sparse_matrices.hpp"
 
 namespace fabform {
 namespace {
 
+using test::same_bits;
+
 // Some rows left empty, and so, on wide shapes, some columns.
 RowMatrix random_sparse(Eigen::Index rows, Eigen::Index columns, int per_row, unsigned seed) {
   return test::random_sparse(rows, columns, per_row, seed, 7);
-}
-
-bool same_bits(const RowMatrix& x, const RowMatrix& y) {
-  return x.rows() == y.rows() && x.cols() == y.cols() && x.nonZeros() == y.nonZeros() &&
-         std::equal(x.valuePtr(), x.valuePtr() + x.nonZeros(), y.valuePtr()) &&
-         std::equal(x.innerIndexPtr(), x.innerIndexPtr() + x.nonZeros(), y.innerIndexPtr()) &&
-         std::equal(x.outerIndexPtr(), x.outerIndexPtr() + x.rows() + 1, y.outerIndexPtr());
 }
 
 // Runs `check` on one thread and on two, three and five (bands with both edges inside the
