@@ -96,14 +96,16 @@ double HingeBending::node_energy_change(const Model& model, const Positions& x, 
 }
 
 void HingeBending::add_stiffness(const Model& model, const Positions& /*x*/, StiffnessSink& sink) const {
-  for (const Hinge& h : model.fabric.hinges()) {
+  const std::vector<Hinge>& hinges = model.fabric.hinges();
+  sink.add_each(hinges.size(), [&](std::size_t k, StiffnessSink& part) {
+    const Hinge& h = hinges[k];
     const HingeStencil stencil = hinge_stencil(h);
     const double scale = 2.0 * rigidity_of(model, h) * h.shape_factor;
     for (std::size_t r = 0; r < static_cast<std::size_t>(stencil.count); ++r)
       for (std::size_t c = 0; c <= r; ++c)
-        sink.add(stencil.node[r], stencil.node[c],
+        part.add(stencil.node[r], stencil.node[c],
                  scale * stencil.weight[r] * stencil.weight[c] * Eigen::Matrix3d::Identity());
-  }
+  });
 }
 
 void HingeBending::bound_stiffness(const Model& model, StiffnessBound& bound) const {

@@ -146,21 +146,21 @@ void SpringTerm::add_stiffness(const Model& model, const Positions& x, Stiffness
     const double slack_axial = s.width * slack_slope[static_cast<std::size_t>(s.kind)] / s.rest_length;
     stiffness[k] = projected_spring_stiffness(xa, xb, s, model.table(s.kind), slack_axial);
   }
-  for (std::size_t i = 0; i < springs.size(); ++i) {
-    if (!covers(springs[i].kind)) continue;
+  sink.add_each(springs.size(), [&](std::size_t i, StiffnessSink& part) {
+    if (!covers(springs[i].kind)) return;
     const int a = springs[i].a, b = springs[i].b;
     if (wraps && wrapped[i]) {
       const Matrix6d& h = *wrapped[i];
-      sink.add(a, a, h.topLeftCorner<3, 3>());
-      sink.add(b, b, h.bottomRightCorner<3, 3>());
-      sink.add(a, b, h.topRightCorner<3, 3>());
-      continue;
+      part.add(a, a, h.topLeftCorner<3, 3>());
+      part.add(b, b, h.bottomRightCorner<3, 3>());
+      part.add(a, b, h.topRightCorner<3, 3>());
+      return;
     }
     // A straight spring between a and b adds [[K, −K], [−K, K]].
-    sink.add(a, a, stiffness[i]);
-    sink.add(b, b, stiffness[i]);
-    sink.add(b, a, -stiffness[i]);
-  }
+    part.add(a, a, stiffness[i]);
+    part.add(b, b, stiffness[i]);
+    part.add(b, a, -stiffness[i]);
+  });
 }
 
 void SpringTerm::bound_stiffness(const Model& model, StiffnessBound& bound) const {

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <utility>
+
+#include "fabform/thread_count.hpp"
+#include "linalg/parallel_failure.hpp"
 
 namespace fabform {
 namespace {
@@ -11,21 +15,55 @@ std::size_t at(int index) { return static_cast<std::size_t>(index); }
 
 // Sums each block the terms hand, in the free directions, into its pair, the lower one (a pair's
 // transpose is the other), in the order handed (so the sums are those of a list of entries
-// summed in that order); notes the pairs there is no block for.
+// summed in that order); notes the pairs there is no block for. Keeps the pairs whose column
+// node is in [first_column, end_column) and passes over the others.
 class PairSums final : public StiffnessSink {
  public:
   PairSums(const FreeDirections& directions, const std::vector<int>& start, const std::vector<int>& row,
-           std::vector<Eigen::Matrix3d>* block, double slack_share)
-      : d_(directions), start_(start), row_(row), block_(block), slack_share_(slack_share) {}
+           std::vector<Eigen::Matrix3d>* block, double slack_share, int first_column, int end_column)
+      : d_(directions),
+        start_(start),
+        row_(row),
+        block_(block),
+        slack_share_(slack_share),
+        first_column_(first_column),
+        end_column_(end_column) {}
 
   void add(int row, int col, const Eigen::Matrix3d& stiffness) override {
-    if (row >= col) sum(row, col, stiffness);
-    else sum(col, row, stiffness.transpose());
+    if (row >= col) {
+      if (keeps(col)) sum(row, col, stiffness);
+    } else if (keeps(row)) {
+      sum(col, row, stiffness.transpose());
+    }
   }
   double slack_share() const override { return slack_share_; }
+  // From 8192 items, the column nodes shared in ranges among the threads, each thread's sink
+  // keeping its range's pairs.
+  void add_each(std::size_t count, const std::function<void(std::size_t, StiffnessSink&)>& each) override {
+    const int parts = count >= static_cast<std::size_t>(kMinParallelItems) ? threads_in_use() : 1;
+    if (parts == 1) return StiffnessSink::add_each(count, each);
+    std::vector<PairSums> shares;
+    const auto columns = static_cast<long long>(end_column_ - first_column_);
+    for (int t = 0; t < parts; ++t)
+      shares.emplace_back(d_, start_, row_, block_, slack_share_,
+                          first_column_ + static_cast<int>(columns * t / parts),
+                          first_column_ + static_cast<int>(columns * (t + 1) / parts));
+    ParallelFailure failure;
+#pragma omp parallel for schedule(static, 1) num_threads(parts)
+    for (int t = 0; t < parts; ++t) {
+      try {
+        for (std::size_t k = 0; k < count && !failure.caught(); ++k) each(k, shares[static_cast<std::size_t>(t)]);
+      } catch (...) {
+        failure.capture();
+      }
+    }
+    failure.rethrow();
+    for (PairSums& share : shares) missing_.insert(missing_.end(), share.missing_.begin(), share.missing_.end());
+  }
   std::vector<std::pair<int, int>>& missing() { return missing_; }
 
  private:
+  bool keeps(int column) const { return column >= first_column_ && column < end_column_; }
   void sum(int i, int j, const Eigen::Matrix3d& stiffness) {
     const auto first = row_.begin() + start_[at(j)], last = row_.begin() + start_[at(j) + 1];
     const auto found = std::lower_bound(first, last, i);
@@ -38,6 +76,7 @@ class PairSums final : public StiffnessSink {
   const std::vector<int>& row_;
   std::vector<Eigen::Matrix3d>* block_;
   double slack_share_;
+  int first_column_, end_column_;
   std::vector<std::pair<int, int>> missing_;
 };
 
@@ -46,7 +85,7 @@ class PairSums final : public StiffnessSink {
 bool ReducedHessian::sum_blocks(const Model& model, const std::vector<Eigen::Vector3d>& x,
                                 const FreeDirections& directions, const Term* lagged, double slack_share) {
   std::fill(block_.begin(), block_.end(), Eigen::Matrix3d::Zero());
-  PairSums sums(directions, start_, row_, &block_, slack_share);
+  PairSums sums(directions, start_, row_, &block_, slack_share, 0, model.node_count());
   for (const auto& term : model.terms) term->add_stiffness(model, x, sums);
   if (lagged) lagged->add_stiffness(model, x, sums);
   if (sums.missing().empty()) return true;
@@ -75,23 +114,34 @@ void ReducedHessian::add_pairs(int nodes, std::vector<std::pair<int, int>> missi
   block_.assign(row_.size(), Eigen::Matrix3d::Zero());
 }
 
+// The entries of node j's columns: for each pair (i, j), node i's slots (the diagonal pair's
+// lower triangle only).
+int ReducedHessian::column_entries(const FreeDirections& d, int j) const {
+  int entries = 0;
+  for (int p = start_[at(j)]; p < start_[at(j) + 1]; ++p) {
+    const int i = row_[at(p)];
+    entries += i == j ? d.count(j) * (d.count(j) + 1) / 2 : d.count(i) * d.count(j);
+  }
+  return entries;
+}
+
 // Column by column of unknowns: a column of node j holds, for each pair (i, j) in ascending i,
-// the rows of node i's slots (from the column's own on the diagonal).
+// the rows of node i's slots (from the column's own on the diagonal). Each node's columns are
+// written where the nodes before it end, so they are written on every thread.
 Eigen::SparseMatrix<double> ReducedHessian::written_out(const FreeDirections& d) const {
   const int nodes = static_cast<int>(start_.size()) - 1;
-  int entries = 0;
-  for (int j = 0; j < nodes; ++j)
-    for (int p = start_[at(j)]; p < start_[at(j) + 1]; ++p) {
-      const int i = row_[at(p)];
-      entries += i == j ? d.count(j) * (d.count(j) + 1) / 2 : d.count(i) * d.count(j);
-    }
+  std::vector<int> first(at(nodes) + 1, 0);  // per node: its columns' first entry
+#pragma omp parallel for schedule(static) if (nodes >= kMinParallelItems)
+  for (int j = 0; j < nodes; ++j) first[at(j) + 1] = column_entries(d, j);
+  for (int j = 0; j < nodes; ++j) first[at(j) + 1] += first[at(j)];
   Eigen::SparseMatrix<double> m(d.unknowns(), d.unknowns());
-  m.resizeNonZeros(entries);
+  m.resizeNonZeros(first.back());
   int* outer = m.outerIndexPtr();
   int* inner = m.innerIndexPtr();
   double* value = m.valuePtr();
-  int written = 0;
-  for (int j = 0; j < nodes; ++j)
+#pragma omp parallel for schedule(static) if (nodes >= kMinParallelItems)
+  for (int j = 0; j < nodes; ++j) {
+    int written = first[at(j)];
     for (int q = 0; q < d.count(j); ++q) {
       outer[d.offset[at(j)] + q] = written;
       for (int p = start_[at(j)]; p < start_[at(j) + 1]; ++p) {
@@ -102,7 +152,8 @@ Eigen::SparseMatrix<double> ReducedHessian::written_out(const FreeDirections& d)
         }
       }
     }
-  outer[d.unknowns()] = written;
+  }
+  outer[d.unknowns()] = first.back();
   return m;
 }
 

@@ -31,6 +31,7 @@ class ReducedHessian {
   bool sum_blocks(const Model& model, const std::vector<Eigen::Vector3d>& x, const FreeDirections& directions,
                   const Term* lagged, double slack_share);
   void add_pairs(int nodes, std::vector<std::pair<int, int>> missing);
+  int column_entries(const FreeDirections& directions, int j) const;
   Eigen::SparseMatrix<double> written_out(const FreeDirections& directions) const;
 
   std::vector<int> start_{0};          // per column node j, its first pair; one more at the end

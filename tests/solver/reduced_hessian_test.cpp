@@ -10,15 +10,17 @@
 #include <random>
 
 #include "fabform/model/hinge_bending.hpp"
+#include "fabform/thread_count.hpp"
 #include "support/clamped_fabric.hpp"
+#include "support/sparse_matrices.hpp"
 
 namespace fabform {
 namespace {
 
-Model bent_hinged_fabric() {
-  FabricSpec spec{0.1, 0.1, 4, 4};
+Model bent_hinged_fabric(int divisions = 4) {
+  FabricSpec spec{0.1, 0.1, divisions, divisions};
   spec.hinges = true;
-  Model model = test::clamped_fabric(4, 0.05);
+  Model model = test::clamped_fabric(divisions, 0.05);
   model.fabric = Fabric(spec);
   model.terms.push_back(std::make_shared<HingeBending>(2e-3));
   std::mt19937 rng(11u);
@@ -105,6 +107,33 @@ TEST(ReducedHessian, AKeptAssemblerGivesWhatAFreshOneGives) {
     }
     last_entries = again.nonZeros();
   }
+}
+
+// From 8192 springs or hinges the pairs' sums are shared among the threads by column node; each
+// pair's blocks still sum in the terms' order, so 2 and 3 threads (ranges of unequal sizes)
+// give one thread's matrix bit for bit, in a fresh assembler (its pairs found in the shared
+// pass) and a kept one, with nodes of 1, 2 and 3 free directions.
+TEST(ReducedHessian, SameBitsOnAnyThreadCount) {
+  const Model model = bent_hinged_fabric(70);
+  ASSERT_GE(model.fabric.springs().size(), static_cast<std::size_t>(kMinParallelItems));
+  ASSERT_GE(model.fabric.hinges().size(), static_cast<std::size_t>(kMinParallelItems));
+  std::vector<NodeContact> pressed(model.start.size());
+  for (int k = 0; k < model.node_count(); k += 3)
+    pressed[static_cast<std::size_t>(k)] = NodeContact{0, Eigen::Vector3d(0.3, -0.2, 1.0).normalized()};
+  const FreeDirections d = free_directions(model, pressed);
+  const int saved = threads_in_use();
+  use_threads(1);
+  using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  const RowMatrix one(reduced_hessian(model, model.start, d));
+  for (const int threads : {2, 3}) {
+    use_threads(threads);
+    ReducedHessian kept;
+    const RowMatrix fresh(kept.assemble(model, model.start, d));
+    const RowMatrix again(kept.assemble(model, model.start, d));
+    EXPECT_TRUE(test::same_bits(fresh, one)) << threads << " threads";
+    EXPECT_TRUE(test::same_bits(again, one)) << threads << " threads, kept";
+  }
+  use_threads(saved);
 }
 
 }  // namespace

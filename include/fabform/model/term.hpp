@@ -3,6 +3,8 @@
 // its force on a node, its potential, its stiffness and what it asks of a solver, behind one
 // interface. The model holds its terms in a list (model.hpp) and every solver walks that list
 // without naming a term, so a new term is a new file, not an edit in each solver.
+#include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,6 +28,13 @@ class StiffnessSink {
   /// A slack spring's stiffness is zero; a step's matrix may take this share of its table's
   /// steepest slope along it instead (spring_energy.hpp). 0: the energy's own second derivative.
   virtual double slack_share() const { return 0.0; }
+  /// Item k's blocks for k = 0 … count − 1, `each(k, sink)` adding them. A sink may run the items
+  /// on several threads, each into a sink of its own that keeps a share of the pairs, every one
+  /// over all items in order: `each` must only add, and then each pair's blocks are summed in the
+  /// order the serial loop sums them, whatever the threads.
+  virtual void add_each(std::size_t count, const std::function<void(std::size_t, StiffnessSink&)>& each) {
+    for (std::size_t k = 0; k < count; ++k) each(k, *this);
+  }
 };
 
 /// What bounds an explicit time step: per node, half the sum of the absolute stiffness in its
