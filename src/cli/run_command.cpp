@@ -7,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/guarded.hpp"
+#include "cli/huge_pages.hpp"
 #include "cli/interrupt_handlers.hpp"
 #include "fabform/error.hpp"
 #include "fabform/geometry/mesh_report.hpp"
@@ -18,6 +19,7 @@
 #include "fabform/output/run_monitor.hpp"
 #include "fabform/output/results_folder.hpp"
 #include "fabform/output/run_inputs.hpp"
+#include "fabform/scene/memory_budget.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
 #include "fabform/solver/grid_continuation.hpp"
@@ -176,6 +178,7 @@ void explain_ending(Summary* summary, const RunMonitor& monitor, const std::stri
 int run(const RunArguments& args) {
   const auto started = std::chrono::steady_clock::now();
   const RunStart start = start_of(args);
+  restart_with_huge_pages(expected_nodes(start.scene.fabric));
   use_threads(start.scene.solver.threads);  // building the model checks every node in parallel too
   Model model = build_model(start.scene);  // its bodies travel in a run in load steps
   const Scene scene = with_tolerance_in_newtons(start.scene, model);
@@ -210,13 +213,14 @@ int run(const RunArguments& args) {
                scene.name.c_str(), model.node_count(), model.bodies.size(),
                scene.solver.name.c_str(), scene.solver.tolerance_N(),
                start.recorded ? (", resumed after iteration " + std::to_string(so_far.iterations)).c_str() : "");
+  const bool huge_pages = malloc_gets_huge_pages();
   const auto publish = [&](const SolverState& s, const Summary& summary) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m, scene.solver.tolerance_N());
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     std::vector<std::string> warnings = collect_warnings(model, s, check, 1e-6, of_model);
     if (std::string w = position_tolerance_warning(summary); !w.empty()) warnings.push_back(std::move(w));
     write_results(dir, RunRecord{scene, model, s, summary, check, inputs, std::move(warnings), wall,
-                                 scene.solver.threads, &finished_steps, &continuation});
+                                 scene.solver.threads, huge_pages, &finished_steps, &continuation});
   };
   Progress progress(stderr);
   RunMonitor monitor(state, so_far, scene.checkpoint, publish, args.quiet ? nullptr : &progress);
@@ -226,7 +230,8 @@ int run(const RunArguments& args) {
   // checkpointed, so that the run goes on from the next step.
   const StepObserver step_done = [&](int step, const SolverState& s, const Summary& of_step) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m, scene.solver.tolerance_N());
-    StepResult result = step_result(RunRecord{scene, model, s, of_step, check, inputs, {}, 0.0, scene.solver.threads}, step);
+    StepResult result =
+        step_result(RunRecord{scene, model, s, of_step, check, inputs, {}, 0.0, scene.solver.threads, huge_pages}, step);
     finished_steps.erase(std::remove_if(finished_steps.begin(), finished_steps.end(),
                                         [&](const StepResult& r) { return r.step >= step; }),
                          finished_steps.end());

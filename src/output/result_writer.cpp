@@ -147,6 +147,7 @@ std::string result_json(const RunRecord& run, const StateFigures& state, const C
   j["inputs"] = inputs;
   j["solver"] = s.solver;
   j["threads"] = run.threads;
+  j["huge_pages"] = run.huge_pages;
   j["converged"] = s.converged();
   j["termination"] = to_string(s.termination);
   j["message"] = s.message;

@@ -31,7 +31,7 @@ nlohmann::json drape_written(const std::function<void(const Scene&, std::vector<
   const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-6, 1e-6);
   const RunInputs inputs = describe_inputs(scene, coarse);
   test::TempDir dir;
-  write_results(dir.path("out"), RunRecord{scene, model, state, summary, check, inputs, {}, 0.0, 1, nullptr});
+  write_results(dir.path("out"), RunRecord{scene, model, state, summary, check, inputs, {}, 0.0, 1, false, nullptr});
   std::ifstream in(dir.path("out/result.json"));
   return nlohmann::json::parse(in).at("drape");
 }

@@ -21,7 +21,7 @@ struct StartedRun {
         state(SolverState::at_start(model)),
         check(measure_equilibrium(model, state.x, 1e-6, 1e-3)),
         inputs(describe_inputs(scene, overrides)) {}
-  RunRecord record() const { return RunRecord{scene, model, state, summary, check, inputs, {}, 0.0, 1, nullptr}; }
+  RunRecord record() const { return RunRecord{scene, model, state, summary, check, inputs, {}, 0.0, 1, false, nullptr}; }
 
   Scene scene;
   Model model;

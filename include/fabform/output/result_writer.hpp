@@ -40,6 +40,7 @@ struct RunRecord {
   std::vector<std::string> warnings;
   double wall_seconds = 0.0;
   int threads = 1;
+  bool huge_pages = false;  // whether the process's memory came in transparent huge pages
   const std::vector<StepResult>* steps = nullptr;  // the finished load steps, in order
   // The coarser grids solved first (grid_continuation.hpp), coarsest first; null or empty: none.
   const std::vector<ContinuationLevel>* continuation = nullptr;
