@@ -70,25 +70,29 @@ void product_row(const RowMatrix& r, const RowMatrix& a, const RowMatrix& p, Eig
   coarse.columns.clear();
 }
 
-// The blocks' rows one after another.
-RowMatrix stacked(const std::vector<RowBlock>& blocks, Eigen::Index rows, Eigen::Index columns) {
-  Eigen::Index entries = 0;
-  for (const RowBlock& b : blocks) entries += static_cast<Eigen::Index>(b.value.size());
-  if (entries > std::numeric_limits<int>::max())
+// The blocks' rows one after another, each block copied on its own thread.
+RowMatrix stacked(const std::vector<RowBlock>& blocks, Eigen::Index rows, Eigen::Index columns, int threads) {
+  std::vector<Eigen::Index> first(blocks.size() + 1, 0);  // per block: its first entry
+  for (std::size_t k = 0; k < blocks.size(); ++k) first[k + 1] = first[k] + static_cast<Eigen::Index>(blocks[k].value.size());
+  if (first.back() > std::numeric_limits<int>::max())
     throw std::length_error("galerkin_product: more entries than Eigen's int indices hold");
   RowMatrix out(rows, columns);
-  out.resizeNonZeros(entries);
-  Eigen::Index row = 0, at = 0;
-  for (const RowBlock& b : blocks) {
-    const Eigen::Index first = at;
+  out.resizeNonZeros(first.back());
+  std::vector<Eigen::Index> first_row(blocks.size() + 1, 0);
+  for (std::size_t k = 0; k < blocks.size(); ++k)
+    first_row[k + 1] = first_row[k] + static_cast<Eigen::Index>(blocks[k].row_size.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    const RowBlock& b = blocks[k];
+    Eigen::Index row = first_row[k], at = first[k];
     for (const int size : b.row_size) {
       out.outerIndexPtr()[row++] = static_cast<int>(at);
       at += size;
     }
-    std::copy(b.column.begin(), b.column.end(), out.innerIndexPtr() + first);
-    std::copy(b.value.begin(), b.value.end(), out.valuePtr() + first);
+    std::copy(b.column.begin(), b.column.end(), out.innerIndexPtr() + first[k]);
+    std::copy(b.value.begin(), b.value.end(), out.valuePtr() + first[k]);
   }
-  out.outerIndexPtr()[rows] = static_cast<int>(at);
+  out.outerIndexPtr()[rows] = static_cast<int>(first.back());
   return out;
 }
 
@@ -127,7 +131,7 @@ RowMatrix galerkin_product(const RowMatrix& restriction, const RowMatrix& a, con
     }
   }
   failure.rethrow();
-  return stacked(blocks, rows, prolongation.cols());
+  return stacked(blocks, rows, prolongation.cols(), threads);
 }
 
 }  // namespace fabform
