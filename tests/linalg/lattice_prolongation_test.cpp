@@ -9,7 +9,9 @@
 #include <array>
 #include <stdexcept>
 
+#include "fabform/thread_count.hpp"
 #include "support/grid_stiffness.hpp"
+#include "support/sparse_matrices.hpp"
 
 namespace fabform {
 namespace {
@@ -100,6 +102,24 @@ TEST(LatticeProlongation, RowsAreInColumnOrderAndEveryUnknownInterpolates) {
     // Sums of at most twelve products of numbers of order 10: rounding at 1e-14.
     EXPECT_NEAR(moves[static_cast<Eigen::Index>(u)], l.direction[u].dot(bilinear(ij[0], ij[1])), 1e-13) << "unknown " << u;
   }
+}
+
+// From 8192 rows both passes over the rows run on every thread: the same matrix, bit for bit, as
+// on one (61 × 61 nodes, 11 163 unknowns, some directions oblique, one slot unused).
+TEST(LatticeProlongation, SameMatrixOnOneThreadOrTwo) {
+  LatticeUnknowns l = test::grid_lattice(61);
+  ASSERT_GE(l.direction.size(), static_cast<std::size_t>(kMinParallelItems));
+  for (std::size_t u = 0; u < l.direction.size(); ++u)
+    if (u % 5 == 0) l.direction[u] = Eigen::Vector3d(0.3, -0.9, 0.2 + 1e-5 * static_cast<double>(u)).normalized();
+  l.direction[4] = Eigen::Vector3d::Zero();
+  const int saved = threads_in_use();
+  use_threads(1);
+  const RowMatrix unknowns_one = unknown_prolongation(l), lattice_one = lattice_prolongation({61, 70});
+  use_threads(2);
+  const RowMatrix unknowns_two = unknown_prolongation(l), lattice_two = lattice_prolongation({61, 70});
+  use_threads(saved);
+  EXPECT_TRUE(test::same_bits(unknowns_two, unknowns_one));
+  EXPECT_TRUE(test::same_bits(lattice_two, lattice_one));
 }
 
 TEST(LatticeProlongation, RefusesADirectionPerUnknownMissing) {
