@@ -1,6 +1,9 @@
 #include "solver/free_directions.hpp"
 
 #include <optional>
+#include <vector>
+
+#include "fabform/thread_count.hpp"
 
 namespace fabform {
 namespace {
@@ -35,9 +38,15 @@ int free_axes(AxisMask locks) {
 FreeDirections free_directions(const Model& model, const std::vector<NodeContact>& contact) {
   const auto n = static_cast<std::size_t>(model.node_count());
   FreeDirections d{std::vector<int>(n + 1, 0), std::vector<Eigen::Matrix3d>(n)};
+  std::vector<int> used(n);
+#pragma omp parallel for schedule(static) if (n >= static_cast<std::size_t>(kMinParallelItems))
   for (std::size_t k = 0; k < n; ++k) {
-    d.used += node_basis(model.locks[k], contact[k], &d.basis[k]);
-    d.offset[k + 1] = d.offset[k] + free_axes(model.locks[k]);
+    used[k] = node_basis(model.locks[k], contact[k], &d.basis[k]);
+    d.offset[k + 1] = free_axes(model.locks[k]);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    d.used += used[k];
+    d.offset[k + 1] += d.offset[k];
   }
   return d;
 }
@@ -45,6 +54,7 @@ FreeDirections free_directions(const Model& model, const std::vector<NodeContact
 std::vector<Eigen::Vector3d> node_steps(const FreeDirections& directions,
                                         const Eigen::VectorXd& unknowns) {
   std::vector<Eigen::Vector3d> steps(directions.basis.size());
+#pragma omp parallel for schedule(static) if (steps.size() >= static_cast<std::size_t>(kMinParallelItems))
   for (std::size_t k = 0; k < steps.size(); ++k) {
     Eigen::Vector3d local = Eigen::Vector3d::Zero();
     const int node = static_cast<int>(k);
@@ -57,6 +67,7 @@ std::vector<Eigen::Vector3d> node_steps(const FreeDirections& directions,
 Eigen::VectorXd reduced_forces(const FreeDirections& directions,
                                const std::vector<Eigen::Vector3d>& forces) {
   Eigen::VectorXd reduced(directions.unknowns());
+#pragma omp parallel for schedule(static) if (forces.size() >= static_cast<std::size_t>(kMinParallelItems))
   for (std::size_t k = 0; k < forces.size(); ++k) {
     const int node = static_cast<int>(k);
     const Eigen::Vector3d local = directions.of(node).transpose() * forces[k];
