@@ -86,6 +86,7 @@ std::vector<Eigen::Vector3d> node_forces(const Model& model, const std::vector<E
 // Seed 003 §3.2.2: a node on a body whose force (on its free axes) points out of it leaves it.
 void release_pulling_nodes(const Model& model, const std::vector<Eigen::Vector3d>& forces,
                            SolverState& state) {
+#pragma omp parallel for schedule(static) if (forces.size() >= static_cast<std::size_t>(kMinParallelItems))
   for (std::size_t k = 0; k < forces.size(); ++k) {
     NodeContact& contact = state.contact[k];
     if (contact.active() && remove_locked(forces[k], model.locks[k]).dot(contact.normal) > 0.0)
@@ -97,6 +98,7 @@ void release_pulling_nodes(const Model& model, const std::vector<Eigen::Vector3d
 std::vector<Eigen::Vector3d> with_friction(const Model& model, std::vector<Eigen::Vector3d> forces,
                                            const CoulombFriction& friction, const std::vector<Eigen::Vector3d>& x) {
   if (friction.empty()) return forces;
+#pragma omp parallel for schedule(static) if (model.node_count() >= kMinParallelItems)
   for (int k = 0; k < model.node_count(); ++k)
     forces[static_cast<std::size_t>(k)] += friction.force_at(model, x, k, x[static_cast<std::size_t>(k)]);
   return forces;
