@@ -1,6 +1,7 @@
 #include "fabform/output/results_folder.hpp"
 
 #include <cerrno>
+#include <cstddef>
 #include <cstdio>
 #include <filesystem>
 
@@ -9,11 +10,16 @@
 
 #include "fabform/error.hpp"
 #include "fabform/output/atomic_file.hpp"
+#include "fabform/thread_count.hpp"
+#include "linalg/parallel_failure.hpp"
 
 namespace fabform {
 namespace {
 
 namespace fs = std::filesystem;
+
+// From this many bytes in all, the files are written on every thread.
+constexpr std::size_t kParallelWriteBytes = std::size_t{16} << 20;
 
 fs::path normalised(const std::string& dir) {
   fs::path path = fs::path(dir).lexically_normal();
@@ -60,8 +66,24 @@ fs::path stage(const fs::path& dir, const char* role, const std::vector<ResultFi
   fs::remove_all(staged, ec);  // left by a run that was killed while writing
   if (!fs::create_directories(staged, ec))
     throw SystemError(staged.string(), "create a folder", ec ? ec.message() : "it exists");
+  // Each file on its own thread when they are large (the page cache's copy of a million nodes'
+  // half gigabyte of text took 3.5 s on one).
+  std::size_t bytes = 0;
+  for (const auto& file : files) bytes += file.second.size();
+  ParallelFailure failure;
+  const auto count = static_cast<std::ptrdiff_t>(files.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_in_use()) if (bytes >= kParallelWriteBytes)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    if (failure.caught()) continue;
+    const auto& [name, content] = files[static_cast<std::size_t>(k)];
+    try {
+      write_file((staged / name).string(), content);
+    } catch (...) {
+      failure.capture();
+    }
+  }
   try {
-    for (const auto& [name, content] : files) write_file((staged / name).string(), content);
+    failure.rethrow();
   } catch (...) {
     fs::remove_all(staged, ec);
     throw;

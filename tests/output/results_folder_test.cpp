@@ -8,6 +8,7 @@
 
 #include "fabform/error.hpp"
 #include "fabform/output/results_folder.hpp"
+#include "fabform/thread_count.hpp"
 #include "support/cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -57,6 +58,24 @@ TEST(ResultsFolder, AFailedPublishLeavesThePreviousResults) {
                std::runtime_error);
   EXPECT_EQ(names_in(dir.path("out")), std::set<std::string>{"result.json"});
   EXPECT_EQ(test::slurp(dir.path("out/result.json")), "old");
+  EXPECT_EQ(names_in(dir.root().string()), std::set<std::string>{"out"});
+}
+
+// From 16 MB in all the files are written on every thread: each whole, and a file that cannot be
+// written still leaves the previous results and no staging folder.
+TEST(ResultsFolder, LargeFilesWrittenOnEveryThread) {
+  test::TempDir dir;
+  const int saved = threads_in_use();
+  use_threads(2);
+  const std::string big(9u << 20, 'a'), other(9u << 20, 'b');
+  publish_results(dir.path("out"), {{"fabric.vtk", big}, {"fabric.obj", other}, {"result.json", "{}\n"}});
+  EXPECT_TRUE(test::slurp(dir.path("out/fabric.vtk")) == big);
+  EXPECT_TRUE(test::slurp(dir.path("out/fabric.obj")) == other);
+  EXPECT_THROW(publish_results(dir.path("out"), {{"fabric.vtk", other}, {"no/such/sub/file", big}, {"result.json", "new"}}),
+               std::runtime_error);
+  use_threads(saved);
+  EXPECT_EQ(names_in(dir.path("out")), (std::set<std::string>{"fabric.vtk", "fabric.obj", "result.json"}));
+  EXPECT_EQ(test::slurp(dir.path("out/result.json")), "{}\n");
   EXPECT_EQ(names_in(dir.root().string()), std::set<std::string>{"out"});
 }
 
