@@ -1,6 +1,7 @@
 #include "linalg/galerkin_product.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -16,8 +17,13 @@ namespace {
 
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
+// Each thread's accumulators and each block sit on cache lines of their own: a vector's end
+// moves with every entry pushed, and two threads pushing into neighbours on one line would take
+// it from each other at every entry.
+constexpr std::size_t kCacheLine = 64;
+
 // A row under construction: its entries' values in a dense array, the columns met in a list.
-struct SparseAccumulator {
+struct alignas(kCacheLine) SparseAccumulator {
   std::vector<double> value;
   std::vector<char> present;
   std::vector<int> columns;
@@ -44,7 +50,7 @@ struct SparseAccumulator {
 };
 
 // Consecutive rows of a row-major matrix.
-struct RowBlock {
+struct alignas(kCacheLine) RowBlock {
   std::vector<int> row_size, column;
   std::vector<double> value;
 };
