@@ -11,6 +11,7 @@
 
 #include "fabform/thread_count.hpp"
 #include "support/shapes.hpp"
+#include "support/threads_restored.hpp"
 
 namespace fabform {
 namespace {
@@ -113,7 +114,7 @@ TEST(ForEachNearby, VisitsEveryPointOnceWithTheSameAnswersOnOneThreadOrTwo) {
   const std::vector<V> points = sheet();
   const int count = static_cast<int>(points.size());
   ASSERT_GE(count, kMinParallelItems);
-  const int before = threads_in_use();
+  const test::ThreadsRestored restored;
   for (const int threads : {1, 2}) {
     use_threads(threads);
     std::vector<std::atomic<int>> visits(points.size());
@@ -128,7 +129,6 @@ TEST(ForEachNearby, VisitsEveryPointOnceWithTheSameAnswersOnOneThreadOrTwo) {
       if (k % 7 == 0) expect_same_answer(answers[k], bodies[1].closest(points[k]), points[k]);
     }
   }
-  use_threads(before);  // the tests after this one, in the same process, run as they would alone
 }
 
 }  // namespace

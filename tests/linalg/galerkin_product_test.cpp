@@ -14,6 +14,7 @@
 #include "linalg/lattice_prolongation.hpp"
 #include "support/grid_stiffness.hpp"
 #include "support/sparse_matrices.hpp"
+#include "support/threads_restored.hpp"
 
 namespace fabform {
 namespace {
@@ -53,7 +54,7 @@ TEST(GalerkinProduct, GivesEigensBitsWhateverTheBlocksAndThreads) {
   // short) and of 1, on one thread and on two (the loop runs on every thread from 8192 rows:
   // 129 × 129 nodes, 3 · 65 · 65 = 12675 coarse rows).
   static_assert(3 * 65 * 65 >= kMinParallelItems && 3 * 41 * 41 < kMinParallelItems, "one size each side");
-  const int saved = threads_in_use();
+  const test::ThreadsRestored restored;
   for (const int side : {81, 129}) {
     const RowMatrix a = test::symmetric(test::grid_stiffness(side, 0.2));
     const RowMatrix p = lattice_prolongation({side, side});
@@ -67,7 +68,6 @@ TEST(GalerkinProduct, GivesEigensBitsWhateverTheBlocksAndThreads) {
     EXPECT_TRUE(same_bits(galerkin_product(r, a, p, 100), whole)) << side;
     EXPECT_TRUE(same_bits(galerkin_product(r, a, p), whole)) << side;
   }
-  use_threads(saved);
 }
 
 TEST(GalerkinProduct, ListsEachRowsColumnsInIncreasingOrder) {

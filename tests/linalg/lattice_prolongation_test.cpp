@@ -12,6 +12,7 @@
 #include "fabform/thread_count.hpp"
 #include "support/grid_stiffness.hpp"
 #include "support/sparse_matrices.hpp"
+#include "support/threads_restored.hpp"
 
 namespace fabform {
 namespace {
@@ -112,12 +113,11 @@ TEST(LatticeProlongation, SameMatrixOnOneThreadOrTwo) {
   for (std::size_t u = 0; u < l.direction.size(); ++u)
     if (u % 5 == 0) l.direction[u] = Eigen::Vector3d(0.3, -0.9, 0.2 + 1e-5 * static_cast<double>(u)).normalized();
   l.direction[4] = Eigen::Vector3d::Zero();
-  const int saved = threads_in_use();
+  const test::ThreadsRestored restored;
   use_threads(1);
   const RowMatrix unknowns_one = unknown_prolongation(l), lattice_one = lattice_prolongation({61, 70});
   use_threads(2);
   const RowMatrix unknowns_two = unknown_prolongation(l), lattice_two = lattice_prolongation({61, 70});
-  use_threads(saved);
   EXPECT_TRUE(test::same_bits(unknowns_two, unknowns_one));
   EXPECT_TRUE(test::same_bits(lattice_two, lattice_one));
 }

@@ -17,6 +17,7 @@
 
 #include "fabform/thread_count.hpp"
 #include "support/grid_stiffness.hpp"
+#include "support/threads_restored.hpp"
 
 namespace fabform {
 namespace {
@@ -118,7 +119,7 @@ TEST(LineGaussSeidel, ALargeLevelSweptInHalvesIsSymmetricPositiveAndConverges) {
 }
 
 TEST(LineGaussSeidel, ALargeLevelGivesTheSameBitsOnOneThreadAndTwo) {
-  const int saved = threads_in_use();
+  const test::ThreadsRestored restored;
   for (const RowMatrix& a : large_levels()) {
     const LineGaussSeidel s(a, grid_places(60));
     const Eigen::VectorXd b = load(a.rows());
@@ -128,7 +129,6 @@ TEST(LineGaussSeidel, ALargeLevelGivesTheSameBitsOnOneThreadAndTwo) {
     const Eigen::VectorXd two = symmetric_sweep(s, a, b);
     EXPECT_TRUE(one == two);
   }
-  use_threads(saved);
 }
 
 TEST(LineGaussSeidel, APointWithNoStiffnessAndNoLoadStaysPut) {

@@ -15,6 +15,7 @@
 #include "linalg/lattice_prolongation.hpp"
 #include "support/grid_stiffness.hpp"
 #include "support/sparse_matrices.hpp"
+#include "support/threads_restored.hpp"
 
 namespace fabform {
 namespace {
@@ -30,13 +31,12 @@ RowMatrix random_sparse(Eigen::Index rows, Eigen::Index columns, int per_row, un
 // matrix; more threads than cores is no matter here), the run's own count put back after.
 template <class Check>
 void on_one_thread_and_more(Check check) {
-  const int saved = threads_in_use();
+  const test::ThreadsRestored restored;
   for (const int threads : {1, 2, 3, 5}) {
     SCOPED_TRACE(testing::Message() << threads << " thread(s)");
     use_threads(threads);
     check();
   }
-  use_threads(saved);
 }
 
 TEST(SparseTranspose, IsEigensTransposeOnEveryShape) {

@@ -11,6 +11,7 @@
 #include "fabform/thread_count.hpp"
 #include "support/cli.hpp"
 #include "support/temp_dir.hpp"
+#include "support/threads_restored.hpp"
 
 namespace fabform {
 namespace {
@@ -65,7 +66,7 @@ TEST(ResultsFolder, AFailedPublishLeavesThePreviousResults) {
 // written still leaves the previous results and no staging folder.
 TEST(ResultsFolder, LargeFilesWrittenOnEveryThread) {
   test::TempDir dir;
-  const int saved = threads_in_use();
+  const test::ThreadsRestored restored;
   use_threads(2);
   const std::string big(9u << 20, 'a'), other(9u << 20, 'b');
   publish_results(dir.path("out"), {{"fabric.vtk", big}, {"fabric.obj", other}, {"result.json", "{}\n"}});
@@ -73,7 +74,6 @@ TEST(ResultsFolder, LargeFilesWrittenOnEveryThread) {
   EXPECT_TRUE(test::slurp(dir.path("out/fabric.obj")) == other);
   EXPECT_THROW(publish_results(dir.path("out"), {{"fabric.vtk", other}, {"no/such/sub/file", big}, {"result.json", "new"}}),
                std::runtime_error);
-  use_threads(saved);
   EXPECT_EQ(names_in(dir.path("out")), (std::set<std::string>{"fabric.vtk", "fabric.obj", "result.json"}));
   EXPECT_EQ(test::slurp(dir.path("out/result.json")), "{}\n");
   EXPECT_EQ(names_in(dir.root().string()), std::set<std::string>{"out"});

@@ -13,6 +13,7 @@
 #include "fabform/thread_count.hpp"
 #include "support/clamped_fabric.hpp"
 #include "support/sparse_matrices.hpp"
+#include "support/threads_restored.hpp"
 
 namespace fabform {
 namespace {
@@ -121,7 +122,7 @@ TEST(ReducedHessian, SameBitsOnAnyThreadCount) {
   for (int k = 0; k < model.node_count(); k += 3)
     pressed[static_cast<std::size_t>(k)] = NodeContact{0, Eigen::Vector3d(0.3, -0.2, 1.0).normalized()};
   const FreeDirections d = free_directions(model, pressed);
-  const int saved = threads_in_use();
+  const test::ThreadsRestored restored;
   use_threads(1);
   using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   const RowMatrix one(reduced_hessian(model, model.start, d));
@@ -133,7 +134,6 @@ TEST(ReducedHessian, SameBitsOnAnyThreadCount) {
     EXPECT_TRUE(test::same_bits(fresh, one)) << threads << " threads";
     EXPECT_TRUE(test::same_bits(again, one)) << threads << " threads, kept";
   }
-  use_threads(saved);
 }
 
 }  // namespace
