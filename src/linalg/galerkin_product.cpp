@@ -116,7 +116,7 @@ RowMatrix galerkin_product(const RowMatrix& restriction, const RowMatrix& a, con
   // Each thread sums into its own accumulators (each as long as A's rows), made before the loop
   // so that no allocation can fail inside it but a row's, which is caught there. After one, the
   // blocks left are skipped.
-  const int threads = rows >= kMinParallelItems ? std::max(1, std::min(threads_in_use(), count)) : 1;
+  const int threads = std::max(1, std::min(threads_in_use(), count));
   std::vector<SparseAccumulator> fine, coarse;
   for (int t = 0; t < threads; ++t) {
     fine.emplace_back(a.cols());

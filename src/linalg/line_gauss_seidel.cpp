@@ -8,6 +8,7 @@
 
 #include "fabform/thread_count.hpp"
 #include "linalg/parallel_failure.hpp"
+#include "linalg/sparse_diagonal.hpp"
 
 namespace fabform {
 
@@ -21,8 +22,7 @@ using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 constexpr double kShift = 1e-10;
 
 double mean_diagonal(const RowMatrix& a) {
-  double sum = 0.0;
-  for (Eigen::Index r = 0; r < a.rows(); ++r) sum += a.coeff(r, r);
+  const double sum = sum_in_order(stored_diagonal(a, diagonal_positions(a)));
   return a.rows() > 0 && sum > 0.0 ? sum / static_cast<double>(a.rows()) : 1.0;
 }
 

@@ -86,6 +86,7 @@ std::optional<LatticeUnknowns> lattice_unknowns(const FreeDirections& directions
   l.node_lattice.resize(static_cast<std::size_t>(fabric.node_count()));
   l.node.resize(static_cast<std::size_t>(directions.unknowns()));
   l.direction.resize(l.node.size());
+#pragma omp parallel for schedule(static) if (fabric.node_count() >= kMinParallelItems)
   for (int k = 0; k < fabric.node_count(); ++k) {
     l.node_lattice[static_cast<std::size_t>(k)] = {fabric.i_of(k), fabric.j_of(k)};
     for (int c = 0; c < directions.count(k); ++c) {
@@ -102,7 +103,9 @@ std::optional<LatticeUnknowns> lattice_unknowns(const FreeDirections& directions
 UnknownLayout unknown_layout(const FreeDirections& directions, const Fabric& fabric) {
   UnknownLayout layout;
   layout.component.resize(static_cast<std::size_t>(directions.unknowns()));
-  for (int k = 0; k + 1 < static_cast<int>(directions.offset.size()); ++k)
+  const int nodes = static_cast<int>(directions.offset.size()) - 1;
+#pragma omp parallel for schedule(static) if (nodes >= kMinParallelItems)
+  for (int k = 0; k < nodes; ++k)
     for (int c = 0; c < directions.count(k); ++c) layout.component[directions.offset[k] + c] = c;
   layout.lattice = lattice_unknowns(directions, fabric);
   return layout;

@@ -13,6 +13,7 @@
 #include "fabform/solver/solver_loop.hpp"
 #include "fabform/solver/position_error.hpp"
 #include "linalg/linear_solver.hpp"
+#include "linalg/sparse_diagonal.hpp"
 #include "solver/free_directions.hpp"
 #include "solver/lagged_friction.hpp"
 #include "solver/reduced_hessian.hpp"
@@ -217,11 +218,12 @@ class NewtonStep {
       linear_ = make_linear_solver(concrete_method(linear_method_, LinearSystemShape{/*unknowns=*/directions.unknowns(),
                                                                                     /*lattice=*/layout.lattice.has_value(),
                                                                                     /*bending=*/model_.resists_bending()}));
-    const Eigen::VectorXd diagonal = h.diagonal();
-    const double mean = h.diagonal().sum() / directions.used;  // summed in the sparse order, as ever
+    const std::vector<Eigen::Index> on_diagonal = diagonal_positions(h);
+    const Eigen::VectorXd diagonal = stored_diagonal(h, on_diagonal);
+    const double mean = sum_in_order(diagonal) / directions.used;
     const double scale = mean > 0.0 ? mean : 1.0;
     for (; mu_ <= kMaxRegularization; mu_ *= 10.0) {
-      h.diagonal() = diagonal.array() + mu_ * scale;
+      set_shifted_diagonal(h, on_diagonal, diagonal, mu_ * scale);
       if (!linear_->set_matrix(h, layout)) continue;
       Eigen::VectorXd delta = linear_->solve(f, eta);
       loose_ = loose_ || (eta > kMeasuringForcing && linear_->method() != LinearMethod::cholesky);

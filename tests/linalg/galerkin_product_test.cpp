@@ -50,10 +50,10 @@ TEST(GalerkinProduct, IsTheProductOfRandomSparseFactors) {
 }
 
 TEST(GalerkinProduct, GivesEigensBitsWhateverTheBlocksAndThreads) {
-  // 81 × 81 nodes: 3 · 41 · 41 = 5043 coarse rows, in one block, in blocks of 100 (the last one
-  // short) and of 1, on one thread and on two (the loop runs on every thread from 8192 rows:
-  // 129 × 129 nodes, 3 · 65 · 65 = 12675 coarse rows).
-  static_assert(3 * 65 * 65 >= kMinParallelItems && 3 * 41 * 41 < kMinParallelItems, "one size each side");
+  // 81 × 81 nodes: 3 · 41 · 41 = 5043 coarse rows; 129 × 129 nodes, 12675 rows. In one block,
+  // in blocks of 100 (the last one short) and of 1, on one thread and on two (the loop runs on
+  // every thread from two blocks; one block alone on one).
+  static_assert(3 * 41 * 41 > 4 * kGalerkinBlockRows, "the default blocks are shared out");
   const test::ThreadsRestored restored;
   for (const int side : {81, 129}) {
     const RowMatrix a = test::symmetric(test::grid_stiffness(side, 0.2));
@@ -65,6 +65,7 @@ TEST(GalerkinProduct, GivesEigensBitsWhateverTheBlocksAndThreads) {
     EXPECT_TRUE(same_bits(galerkin_product(r, a, p, 100), whole)) << side;
     EXPECT_TRUE(same_bits(galerkin_product(r, a, p, 1), whole)) << side;
     use_threads(2);
+    EXPECT_TRUE(same_bits(galerkin_product(r, a, p, r.rows()), whole)) << side;
     EXPECT_TRUE(same_bits(galerkin_product(r, a, p, 100), whole)) << side;
     EXPECT_TRUE(same_bits(galerkin_product(r, a, p), whole)) << side;
   }
