@@ -5,8 +5,6 @@
 #include <functional>
 #include <utility>
 
-#include <parallel/algorithm>
-
 #include "fabform/thread_count.hpp"
 #include "linalg/parallel_failure.hpp"
 
@@ -104,9 +102,7 @@ void ReducedHessian::add_pairs(int nodes, std::vector<std::pair<int, int>> missi
     if (at(j) + 1 < start_.size())
       for (int p = start_[at(j)]; p < start_[at(j) + 1]; ++p) pairs.emplace_back(j, row_[at(p)]);
   }
-  // Distinct pairs or equal ones: any sort gives the same list, so it is sorted on every thread
-  // (the largest serial part of a grid's first assembly).
-  __gnu_parallel::sort(pairs.begin(), pairs.end());
+  std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   start_.assign(at(nodes) + 1, 0);
   row_.clear();
