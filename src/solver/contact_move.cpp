@@ -54,9 +54,6 @@ std::optional<SurfacePoint> entry_point(const RigidBody& body, const Eigen::Vect
   return body.first_entry(to + 2.0 * reach * along.normalized(), to);
 }
 
-// Where a move starts within this share of the body's size of the surface, it starts on it.
-constexpr double kOnSurface = 1e-9;
-
 // A free node moves straight; if the move enters a body, it stops on the surface there. A node
 // held on no axis that starts on the surface (released there because its force pointed out of
 // the body, while the step still leans a hair into it) would stop where it is, step after
@@ -75,7 +72,7 @@ NodeMove fly(const Model& model, const Eigen::Vector3d& from, const Eigen::Vecto
   }
   if (!result.contact.active() || locks != 0) return result;
   const RigidBody& body = model.bodies[static_cast<std::size_t>(result.contact.body)];
-  if (nearest > kOnSurface * body.box().diagonal()) return result;
+  if (nearest > kOnSurfaceShare * body.box().diagonal()) return result;
   return slide(model, to, (to - from).norm(), result.contact);
 }
 

@@ -10,6 +10,7 @@
 
 #include "fabform/geometry/nearby_queries.hpp"
 #include "fabform/scene/model_builder.hpp"
+#include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/solve.hpp"
 
 namespace fabform {
@@ -119,9 +120,13 @@ SolverState continued_start(const Model& model, std::vector<Eigen::Vector3d> int
     for (int axis = 0; axis < 3; ++axis)
       if (locks & (1 << axis)) p[axis] = model.start[i][axis];
     for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-      if (queries.surely_outside(static_cast<int>(b), p, 0.0)) continue;
+      // A node on a facet within rounding starts on it, as on the coarse grid: left free, the first
+      // Newton step would see no surface under it and land it, cut short, by the thousand at
+      // N = 1001 (16 000 nodes, most of them let go again in the next steps).
+      const double on_surface = kOnSurfaceShare * model.bodies[b].box().diagonal();
+      if (queries.surely_outside(static_cast<int>(b), p, on_surface)) continue;
       const SurfacePoint s = queries.closest(static_cast<int>(b), p);
-      if (s.signed_distance > 0.0) continue;
+      if (s.signed_distance > on_surface) continue;
       // A free node goes onto the surface, resting there as on the coarse grid; a held one
       // cannot be moved off its held axes, so it keeps the start the builder checked clear.
       if (locks == 0) {

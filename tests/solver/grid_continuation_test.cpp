@@ -11,6 +11,7 @@
 #include "fabform/error.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
+#include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/newton.hpp"
 #include "test_paths.hpp"
 
@@ -98,6 +99,30 @@ TEST(GridContinuation, ContinuedDomeReachesANeighbouringRestInFewerIterations) {
   std::printf("continued rest %.3g m from the plain rest; iterations %d against %d\n",
               largest_distance(continued_rest, plain_rest), from_coarse.iterations, plain.iterations);
   EXPECT_LT(from_coarse.iterations, plain.iterations);
+}
+
+TEST(GridContinuation, ANodeOnAFacetWithinRoundingStartsInContact) {
+  // Interpolated between two coarse nodes on one facet, a node lies on it up to rounding, above
+  // as often as below; either way it starts in contact, on the surface, while a node clearly
+  // above (four times the margin) stays free where it is.
+  const Scene scene = load_scene(test::source_path("scenes/dome.toml"), {{"fabric.divisions", "[20,20]"}});
+  const Model model = build_model(scene);
+  const RigidBody& dome = model.bodies.front();
+  const double margin = kOnSurfaceShare * dome.box().diagonal();
+  const int centre = 10 * 21 + 10;
+  ASSERT_EQ(model.locks[centre], 0);
+  const Eigen::Vector3d above_top = model.fabric.rest_position(centre) + Eigen::Vector3d(0.001, 0.002, 0.05);
+  const SurfacePoint top = dome.closest(above_top);
+  for (const double height : {-0.5, 0.0, 0.5, 4.0}) {
+    SCOPED_TRACE(testing::Message() << height << " margins above the surface");
+    std::vector<Eigen::Vector3d> interpolated = model.start;
+    interpolated[centre] = top.point + height * margin * top.normal;
+    const SolverState start = continued_start(model, interpolated);
+    const bool on_surface = height <= 1.0;
+    EXPECT_EQ(start.contact[centre].active(), on_surface);
+    if (on_surface) EXPECT_LE((start.x[centre] - top.point).norm(), 1e-12 * dome.box().diagonal());
+    else EXPECT_EQ(start.x[centre], interpolated[centre]);
+  }
 }
 
 // The key's refusals are one line naming the key that must change.
