@@ -120,9 +120,9 @@ SolverState continued_start(const Model& model, std::vector<Eigen::Vector3d> int
     for (int axis = 0; axis < 3; ++axis)
       if (locks & (1 << axis)) p[axis] = model.start[i][axis];
     for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-      // A node on a facet within rounding starts on it, as on the coarse grid: left free, the first
-      // Newton step would see no surface under it and land it, cut short, by the thousand at
-      // N = 1001 (16 000 nodes, most of them let go again in the next steps).
+      // A node on a facet to within rounding starts on it, as on the coarse grid. Left free, the
+      // first Newton step saw no surface under it, moved it in and was cut short where it landed:
+      // 16 000 nodes at N = 1001, most of them let go again in the next steps.
       const double on_surface = kOnSurfaceShare * model.bodies[b].box().diagonal();
       if (queries.surely_outside(static_cast<int>(b), p, on_surface)) continue;
       const SurfacePoint s = queries.closest(static_cast<int>(b), p);
