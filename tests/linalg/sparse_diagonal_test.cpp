@@ -21,8 +21,10 @@ namespace {
 using ColumnMatrix = Eigen::SparseMatrix<double>;
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
+// An empty vector's data() is null, which memcmp must not be given.
 bool same_bits(const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
-  return x.size() == y.size() && std::memcmp(x.data(), y.data(), sizeof(double) * static_cast<std::size_t>(x.size())) == 0;
+  return x.size() == y.size() &&
+         (x.size() == 0 || std::memcmp(x.data(), y.data(), sizeof(double) * static_cast<std::size_t>(x.size())) == 0);
 }
 
 // Random entries, every seventh row empty (so its diagonal entry is missing too).
