@@ -33,16 +33,6 @@ Matrix random_matrix(Eigen::Index rows, Eigen::Index columns, unsigned seed) {
   return Matrix(test::random_sparse(rows, columns, 6, seed, 7));
 }
 
-template <class Check>
-void on_one_thread_and_more(Check check) {
-  const test::ThreadsRestored restored;
-  for (const int threads : {1, 2, 3}) {
-    SCOPED_TRACE(testing::Message() << threads << " thread(s)");
-    use_threads(threads);
-    check();
-  }
-}
-
 template <class Matrix>
 void expect_eigens_diagonal(const Matrix& m) {
   const Eigen::VectorXd eigens = m.diagonal();
@@ -57,7 +47,7 @@ static_assert(9000 > kMinParallelItems, "the largest shape is shared among threa
 constexpr Shape kShapes[] = {{0, 0}, {1, 1}, {5, 9}, {9, 5}, {60, 60}, {9000, 9000}, {9000, 8500}};
 
 TEST(SparseDiagonal, IsEigensDiagonalInBothStorageOrders) {
-  on_one_thread_and_more([] {
+  test::on_thread_counts({1, 2, 3}, [] {
     for (const Shape s : kShapes)
       for (unsigned seed = 1; seed <= 2; ++seed) {
         SCOPED_TRACE(testing::Message() << s.rows << " x " << s.columns << ", seed " << seed);
@@ -94,7 +84,7 @@ TEST(SparseDiagonal, MissingEntriesAreMarked) {
 }
 
 TEST(SparseDiagonal, ShiftedDiagonalIsEigensAssignment) {
-  on_one_thread_and_more([] {
+  test::on_thread_counts({1, 2, 3}, [] {
     for (const Eigen::Index n : {1, 60, 9000}) {
       SCOPED_TRACE(testing::Message() << n << " rows");
       // Every diagonal entry stored: the random entries plus an identity.

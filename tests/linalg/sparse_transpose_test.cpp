@@ -28,15 +28,10 @@ RowMatrix random_sparse(Eigen::Index rows, Eigen::Index columns, int per_row, un
 }
 
 // Runs `check` on one thread and on two, three and five (bands with both edges inside the
-// matrix; more threads than cores is no matter here), the run's own count put back after.
+// matrix; more threads than cores is no matter here).
 template <class Check>
 void on_one_thread_and_more(Check check) {
-  const test::ThreadsRestored restored;
-  for (const int threads : {1, 2, 3, 5}) {
-    SCOPED_TRACE(testing::Message() << threads << " thread(s)");
-    use_threads(threads);
-    check();
-  }
+  test::on_thread_counts({1, 2, 3, 5}, check);
 }
 
 TEST(SparseTranspose, IsEigensTransposeOnEveryShape) {

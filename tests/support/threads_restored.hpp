@@ -2,6 +2,10 @@
 // A test that changes the thread count puts the count it found back when it ends, however it
 // ends (an ASSERT returns early), so the tests after it in the same process run as they would
 // alone.
+#include <initializer_list>
+
+#include <gtest/gtest.h>
+
 #include "fabform/thread_count.hpp"
 
 namespace fabform::test {
@@ -16,5 +20,17 @@ class ThreadsRestored {
  private:
   int before_;
 };
+
+/// Runs `check` on each thread count in turn, each run traced with its count; the count in use
+/// is put back after.
+template <class Check>
+void on_thread_counts(std::initializer_list<int> counts, Check check) {
+  const ThreadsRestored restored;
+  for (const int threads : counts) {
+    SCOPED_TRACE(testing::Message() << threads << " thread(s)");
+    use_threads(threads);
+    check();
+  }
+}
 
 }  // namespace fabform::test
