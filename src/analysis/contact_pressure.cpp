@@ -5,6 +5,7 @@
 #include "fabform/geometry/point_grid.hpp"
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/spring_path.hpp"
+#include "fabform/model/wrapped_spring.hpp"
 
 namespace fabform {
 namespace {
@@ -38,7 +39,7 @@ std::vector<double> edge_forces_N(const Model& model, const std::vector<Eigen::V
     const Eigen::Vector3d& b = x[static_cast<std::size_t>(s.b)];
     const std::optional<EdgeWrap> wrap = spring_wrap(model, s, a, b);
     if (!wrap) continue;
-    const double tension = spring_path_force(model, s, a, b).norm();
+    const double tension = wrapped_spring_force(a, *wrap, s, model.table(s.kind)).norm();
     const double pressing = tension * ((a - wrap->point).normalized() + (b - wrap->point).normalized()).norm();
     force[static_cast<std::size_t>(s.a)] += 0.5 * pressing;
     force[static_cast<std::size_t>(s.b)] += 0.5 * pressing;

@@ -23,14 +23,16 @@ std::optional<Eigen::Vector2d> closest_approach(const Eigen::Vector3d& a, const 
 
 }  // namespace
 
-std::optional<EdgeWrap> wrap_over(const SharpEdge& edge, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+std::optional<EdgeWrap> wrap_over(const SharpEdge& edge, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                  double end_margin_m) {
   const Eigen::Vector3d u = b - a, v = edge.to - edge.from;
   const double edge_length = v.norm();
   if (edge_length == 0.0) return std::nullopt;
   const auto ts = closest_approach(a, u, edge.from, v);
   if (!ts) return std::nullopt;
   const double t = (*ts)[0], s = (*ts)[1];
-  if (!(t > 0.0 && t < 1.0 && s >= 0.0 && s <= 1.0)) return std::nullopt;
+  const double margin = end_margin_m / edge_length;
+  if (!(t > 0.0 && t < 1.0 && s >= margin && s <= 1.0 - margin)) return std::nullopt;
   const Eigen::Vector3d below = (a + t * u) - (edge.from + s * v);  // from the edge to the segment
   if (!(below.dot(edge.normal_a) < 0.0 && below.dot(edge.normal_b) < 0.0)) return std::nullopt;
   if (below.norm() > u.norm()) return std::nullopt;

@@ -366,12 +366,13 @@ std::optional<EdgeWrap> RigidBody::choose_wrap(const std::vector<int>& edges, co
                                                const Eigen::Vector3d& b) const {
   std::optional<EdgeWrap> shortest_clear, longest;
   for (const int e : edges) {
-    const auto w = wrap_over(sharp_edges_[static_cast<std::size_t>(e)], a, b);
+    const auto w = wrap_over(sharp_edges_[static_cast<std::size_t>(e)], a, b, on_surface_distance());
     if (!w) continue;
     if (!longest || w->length > longest->length) longest = w;
     const bool clear = std::none_of(edges.begin(), edges.end(), [&](int other) {
       const SharpEdge& edge = sharp_edges_[static_cast<std::size_t>(other)];
-      return other != e && (wrap_over(edge, a, w->point) || wrap_over(edge, w->point, b));
+      return other != e && (wrap_over(edge, a, w->point, on_surface_distance()) ||
+                            wrap_over(edge, w->point, b, on_surface_distance()));
     });
     if (clear && (!shortest_clear || w->length < shortest_clear->length)) shortest_clear = w;
   }

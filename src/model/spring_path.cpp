@@ -33,10 +33,12 @@ double spring_path_energy(const Model& model, const Spring& spring, const Eigen:
   return wrap ? wrapped_spring_energy(*wrap, spring, table) : spring_energy(xa, xb, spring, table);
 }
 
-Eigen::Vector3d spring_path_force(const Model& model, const Spring& spring, const Eigen::Vector3d& node,
-                                  const Eigen::Vector3d& other) {
+Eigen::Vector3d spring_path_force(const Model& model, const Spring& spring, const Eigen::Vector3d& xa,
+                                  const Eigen::Vector3d& xb, int end) {
   const TensionTable& table = model.table(spring.kind);
-  const auto wrap = spring_wrap(model, spring, node, other);
+  const auto wrap = spring_wrap(model, spring, xa, xb);
+  const Eigen::Vector3d& node = end == spring.a ? xa : xb;
+  const Eigen::Vector3d& other = end == spring.a ? xb : xa;
   return wrap ? wrapped_spring_force(node, *wrap, spring, table) : spring_force_on_a(node, other, spring, table);
 }
 

@@ -82,8 +82,8 @@ Eigen::Vector3d SpringTerm::force_at(const Model& model, const Positions& x, int
   for (const int s : model.fabric.springs_at(node)) {
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     if (!covers(spring.kind)) continue;
-    const int other = spring.a == node ? spring.b : spring.a;
-    force += spring_path_force(model, spring, at, at_index(x, other));
+    force += spring.a == node ? spring_path_force(model, spring, at, at_index(x, spring.b), node)
+                              : spring_path_force(model, spring, at_index(x, spring.a), at, node);
   }
   return force;
 }

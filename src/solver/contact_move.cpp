@@ -72,7 +72,7 @@ NodeMove fly(const Model& model, const Eigen::Vector3d& from, const Eigen::Vecto
   }
   if (!result.contact.active() || locks != 0) return result;
   const RigidBody& body = model.bodies[static_cast<std::size_t>(result.contact.body)];
-  if (nearest > kOnSurfaceShare * body.box().diagonal()) return result;
+  if (nearest > body.on_surface_distance()) return result;
   return slide(model, to, (to - from).norm(), result.contact);
 }
 

@@ -10,7 +10,6 @@
 
 #include "fabform/geometry/nearby_queries.hpp"
 #include "fabform/scene/model_builder.hpp"
-#include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/solve.hpp"
 
 namespace fabform {
@@ -123,7 +122,7 @@ SolverState continued_start(const Model& model, std::vector<Eigen::Vector3d> int
       // A node on a facet to within rounding starts on it, as on the coarse grid. Left free, the
       // first Newton step saw no surface under it, moved it in and was cut short where it landed:
       // 16 000 nodes at N = 1001, most of them let go again in the next steps.
-      const double on_surface = kOnSurfaceShare * model.bodies[b].box().diagonal();
+      const double on_surface = model.bodies[b].on_surface_distance();
       if (queries.surely_outside(static_cast<int>(b), p, on_surface)) continue;
       const SurfacePoint s = queries.closest(static_cast<int>(b), p);
       if (s.signed_distance > on_surface) continue;

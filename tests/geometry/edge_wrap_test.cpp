@@ -51,7 +51,7 @@ TEST(EdgeWrap, TheWrapIsTheShortestWayOverTheEdge) {
   // Above the top face to beside the side face, obliquely across the edge, at several slants.
   for (const double dy : {0.0, 0.2, 0.5, -0.15}) {
     const V a(-0.3, 0.4, 0.05), b(0.04, 0.4 + dy, -0.35);
-    const auto wrap = wrap_over(edge, a, b);
+    const auto wrap = wrap_over(edge, a, b, 0.0);
     ASSERT_TRUE(wrap) << dy;
     const Brute brute = brute_wrap(edge, a, b);
     EXPECT_NEAR(wrap->length, brute.length, 1e-12) << dy;
@@ -72,7 +72,7 @@ TEST(EdgeWrap, PastTheEdgesEndTheWrapHoldsAtTheEnd) {
   // Under the edge near its end at y = 1 (closest to it at y ≈ 0.95), slanting so the unfolded
   // line crosses beyond the end (at y ≈ 1.08).
   const V a(-0.24, 0.61, 0.01), b(0.04, 1.95, -0.44);
-  const auto wrap = wrap_over(edge, a, b);
+  const auto wrap = wrap_over(edge, a, b, 0.0);
   ASSERT_TRUE(wrap);
   EXPECT_TRUE(wrap->at_end);
   EXPECT_NEAR((wrap->point - edge.to).norm(), 0.0, 1e-15);
@@ -90,7 +90,7 @@ TEST(EdgeWrap, AsTheSegmentRisesToTheEdgeTheWrapFallsToItsLength) {
     const V centre = -d * V(1.0, 0.0, 1.0).normalized();
     const V along = V(1.0, 0.0, -1.0).normalized();
     const V a = centre - h * along, b = centre + h * along;
-    const auto wrap = wrap_over(edge, a, b);
+    const auto wrap = wrap_over(edge, a, b, 0.0);
     ASSERT_TRUE(wrap) << d;
     EXPECT_NEAR(wrap->length, 2.0 * std::sqrt(h * h + d * d), 1e-14) << d;
   }
@@ -100,16 +100,16 @@ TEST(EdgeWrap, SegmentsThatDoNotPassUnderTheEdgeDoNotWrap) {
   const SharpEdge edge = box_edge();
   const V along = V(1.0, 0.0, -1.0).normalized();
   const V over = 0.01 * V(1.0, 0.0, 1.0).normalized();
-  EXPECT_FALSE(wrap_over(edge, over - 0.1 * along, over + 0.1 * along)) << "above the edge";
-  EXPECT_FALSE(wrap_over(edge, V(-0.3, 0.5, 0.0), V(-0.05, 0.6, 0.0))) << "lying on the top face";
-  EXPECT_FALSE(wrap_over(edge, V(-0.3, 0.5, 0.0), V(0.0, 0.6, 0.0))) << "ending on the edge";
-  EXPECT_FALSE(wrap_over(edge, V(-0.1, 0.2, -0.1), V(-0.1, 0.8, -0.1))) << "parallel, inside";
-  EXPECT_FALSE(wrap_over(edge, V(-0.3, 1.5, 0.05), V(0.04, 1.5, -0.35))) << "past the edge's end";
+  EXPECT_FALSE(wrap_over(edge, over - 0.1 * along, over + 0.1 * along, 0.0)) << "above the edge";
+  EXPECT_FALSE(wrap_over(edge, V(-0.3, 0.5, 0.0), V(-0.05, 0.6, 0.0), 0.0)) << "lying on the top face";
+  EXPECT_FALSE(wrap_over(edge, V(-0.3, 0.5, 0.0), V(0.0, 0.6, 0.0), 0.0)) << "ending on the edge";
+  EXPECT_FALSE(wrap_over(edge, V(-0.1, 0.2, -0.1), V(-0.1, 0.8, -0.1), 0.0)) << "parallel, inside";
+  EXPECT_FALSE(wrap_over(edge, V(-0.3, 1.5, 0.05), V(0.04, 1.5, -0.35), 0.0)) << "past the edge's end";
 }
 
 TEST(EdgeWrap, ADegenerateEdgeWrapsNothing) {
   const SharpEdge point{V::Zero(), V::Zero(), V::UnitZ(), V::UnitX()};
-  EXPECT_FALSE(wrap_over(point, V(-0.3, 0.0, 0.05), V(0.04, 0.0, -0.35)));
+  EXPECT_FALSE(wrap_over(point, V(-0.3, 0.0, 0.05), V(0.04, 0.0, -0.35), 0.0));
 }
 
 }  // namespace

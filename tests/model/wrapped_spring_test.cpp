@@ -28,14 +28,14 @@ TensionTable knit() { return TensionTable({{0.0, 0.0}, {0.05, 10.0}, {1.0, 400.0
 Spring spring_of(double rest_length) { return Spring{0, 1, rest_length, 0.01, SpringKind::warp}; }
 
 double energy(const V& a, const V& b, const Spring& s) {
-  const auto wrap = wrap_over(kEdge, a, b);
+  const auto wrap = wrap_over(kEdge, a, b, 0.0);
   EXPECT_TRUE(wrap);
   return wrapped_spring_energy(*wrap, s, knit());
 }
 
 Vector6d forces(const Vector6d& x, const Spring& s) {
   const V a = x.head<3>(), b = x.tail<3>();
-  const auto wrap = wrap_over(kEdge, a, b);
+  const auto wrap = wrap_over(kEdge, a, b, 0.0);
   EXPECT_TRUE(wrap);
   Vector6d f;
   f << wrapped_spring_force(a, *wrap, s, knit()), wrapped_spring_force(b, *wrap, s, knit());
@@ -50,7 +50,7 @@ TEST_P(WrappedSpringAt, ForceAndHessianAgreeWithTheEnergyByCentralDifferences) {
   Vector6d x;
   x << a, b;
   const Vector6d f = forces(x, s);
-  const auto wrap = wrap_over(kEdge, a, b);
+  const auto wrap = wrap_over(kEdge, a, b, 0.0);
   ASSERT_TRUE(wrap);
   const Matrix6d hessian = wrapped_spring_hessian(a, b, *wrap, s, knit(), false);
   const double h = 1e-7;
@@ -75,7 +75,7 @@ INSTANTIATE_TEST_SUITE_P(
 // Whatever the wrap, the two legs pull their nodes towards the edge with one tension.
 TEST(WrappedSpring, BothLegsCarryTheSameTensionTowardsTheEdge) {
   const V a(-0.3, 0.4, 0.05), b(0.04, 0.55, -0.35);
-  const auto wrap = wrap_over(kEdge, a, b);
+  const auto wrap = wrap_over(kEdge, a, b, 0.0);
   ASSERT_TRUE(wrap);
   const Spring s = spring_of(0.5);
   const V fa = wrapped_spring_force(a, *wrap, s, knit()), fb = wrapped_spring_force(b, *wrap, s, knit());

@@ -11,7 +11,6 @@
 #include "fabform/error.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
-#include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/newton.hpp"
 #include "test_paths.hpp"
 
@@ -108,7 +107,7 @@ TEST(GridContinuation, ANodeOnAFacetWithinRoundingStartsInContact) {
   const Scene scene = load_scene(test::source_path("scenes/dome.toml"), {{"fabric.divisions", "[20,20]"}});
   const Model model = build_model(scene);
   const RigidBody& dome = model.bodies.front();
-  const double margin = kOnSurfaceShare * dome.box().diagonal();
+  const double margin = dome.on_surface_distance();
   const int centre = 10 * 21 + 10;
   ASSERT_EQ(model.locks[centre], 0);
   const Eigen::Vector3d above_top = model.fabric.rest_position(centre) + Eigen::Vector3d(0.001, 0.002, 0.05);

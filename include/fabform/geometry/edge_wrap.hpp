@@ -32,6 +32,10 @@ struct EdgeWrap {
 /// to the edge line lies strictly inside the wedge, strictly between a and b, within the edge's
 /// length and no farther from it than the segment is long (beyond that the edge's faces no longer
 /// bound the body). As the segment rises to touch the edge, the wrap's length falls to |a − b|.
-std::optional<EdgeWrap> wrap_over(const SharpEdge& edge, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+/// A closest approach within `end_margin_m` of the edge's ends does not count: a segment lying on
+/// a face that an edge ends at (a spring on a box's top, by its vertical edge) meets the edge line
+/// there, and only rounding would say whether it passes under it.
+std::optional<EdgeWrap> wrap_over(const SharpEdge& edge, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                  double end_margin_m);
 
 }  // namespace fabform

@@ -29,6 +29,12 @@ struct SurfacePoint {
   int triangle = -1;
 };
 
+/// Where a point lies within this share of a body's size (its box's diagonal) of the surface, it
+/// lies on it: a node resting on a facet is left a rounding error above or below it (by the
+/// interpolation of a coarser grid's rest, say), a move that starts there starts on it, and a
+/// spring lying on a face does not pass under an edge that ends there.
+constexpr double kOnSurfaceShare = 1e-9;
+
 class RigidBody {
  public:
   /// Throws std::invalid_argument for a mesh with no usable triangle or a bad index, or a
@@ -82,6 +88,8 @@ class RigidBody {
   const TriangleMesh& mesh() const { return mesh_; }
   /// The placed mesh's bounding box (its size holds wherever the body travels).
   const BoundingBox& box() const { return box_; }
+  /// How near its surface a point lies on it: kOnSurfaceShare of the box's diagonal.
+  double on_surface_distance() const { return kOnSurfaceShare * box_.diagonal(); }
   /// Whether every edge joins exactly two faces that run it in opposite directions: a closed,
   /// consistently oriented surface, whose signed distance then changes no faster than the
   /// point moves (it is zero only on the surface).

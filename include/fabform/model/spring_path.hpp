@@ -26,8 +26,9 @@ double spring_path_strain(const Model& model, const Spring& spring, const Eigen:
 double spring_path_energy(const Model& model, const Spring& spring, const Eigen::Vector3d& xa,
                           const Eigen::Vector3d& xb);
 
-/// The force it exerts on the node at `node`, its other end at `other`.
-Eigen::Vector3d spring_path_force(const Model& model, const Spring& spring, const Eigen::Vector3d& node,
-                                  const Eigen::Vector3d& other);
+/// The force it exerts on its end `end` (spring.a or spring.b), its ends at xa and xb. The path
+/// is found from a to b whichever end is asked, so both ends' forces and the energy agree on it.
+Eigen::Vector3d spring_path_force(const Model& model, const Spring& spring, const Eigen::Vector3d& xa,
+                                  const Eigen::Vector3d& xb, int end);
 
 }  // namespace fabform

@@ -9,11 +9,6 @@
 
 namespace fabform {
 
-/// Where a node lies within this share of a body's size (its box's diagonal) of the surface, it
-/// lies on it: a node resting on a facet is left a rounding error above or below it (by the
-/// interpolation of a coarser grid's rest, say), and a move that starts there starts on it.
-constexpr double kOnSurfaceShare = 1e-9;
-
 struct NodeMove {
   Eigen::Vector3d x;
   NodeContact contact;

@@ -37,7 +37,7 @@ std::vector<Eigen::Vector3d> interpolate_rest(const Fabric& coarse, const std::v
                                               const Fabric& fine);
 
 /// A start for `model` from interpolated positions: held axes keep the model's start; a free
-/// node that lands in or on a body (within kOnSurfaceShare of its size) is put on its surface, in
+/// node that lands in or on a body (within RigidBody::on_surface_distance) is put on its surface, in
 /// contact (as in the coarse rest); a node held on some axis that lands inside a body keeps its
 /// own start.
 SolverState continued_start(const Model& model, std::vector<Eigen::Vector3d> interpolated);
