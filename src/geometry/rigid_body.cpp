@@ -364,15 +364,15 @@ std::optional<EdgeWrap> RigidBody::wrap(const Eigen::Vector3d& a, const Eigen::V
 // gives back most of the corner.
 std::optional<EdgeWrap> RigidBody::choose_wrap(const std::vector<int>& edges, const Eigen::Vector3d& a,
                                                const Eigen::Vector3d& b) const {
+  const double on_surface = on_surface_distance();
   std::optional<EdgeWrap> shortest_clear, longest;
   for (const int e : edges) {
-    const auto w = wrap_over(sharp_edges_[static_cast<std::size_t>(e)], a, b, on_surface_distance());
+    const auto w = wrap_over(sharp_edges_[static_cast<std::size_t>(e)], a, b, on_surface);
     if (!w) continue;
     if (!longest || w->length > longest->length) longest = w;
     const bool clear = std::none_of(edges.begin(), edges.end(), [&](int other) {
       const SharpEdge& edge = sharp_edges_[static_cast<std::size_t>(other)];
-      return other != e && (wrap_over(edge, a, w->point, on_surface_distance()) ||
-                            wrap_over(edge, w->point, b, on_surface_distance()));
+      return other != e && (wrap_over(edge, a, w->point, on_surface) || wrap_over(edge, w->point, b, on_surface));
     });
     if (clear && (!shortest_clear || w->length < shortest_clear->length)) shortest_clear = w;
   }
