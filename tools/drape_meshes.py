@@ -15,6 +15,12 @@ multiplies divisions, rings and spokes by L. The triangular mesh's diagonal spri
 000's) is the lattice with its inner nodes moved at random by up to 0.2 of the spacing, drawn from [initial]
 seed: a mesh with no symmetry of its own, run only when --meshes names it.
 
+With --specimens N every mesh and level is run N times, as a tester tests several specimens of a
+fabric, with --set initial.seed=1 … N (the scene needs a start imperfection or the jittered mesh for
+them to differ), --jobs at once; the tables then give each mesh and level's mean drape coefficient
+and mean fold count with their sample standard deviations, and how far apart the mean fold counts
+of the meshes and levels lie (issue 22's target: at most 1).
+
 Writes into --out (default results/drape_meshes): drape_meshes.csv (one row a run), table.md
 (the Figure 9 table and the refinement table, printed too) and runs/ (each run's result.json and
 stderr, as NAME.stderr.txt). Exit status 1 if a run fails or does not converge.
@@ -29,10 +35,15 @@ Usage (after tools/setup.sh, from anywhere):
       --set fabric.compression=buckling --set initial.perturbation_m=1e-4   # folds from the fabric
   /usr/bin/python3 tools/drape_meshes.py --scene scenes/cusick.toml --divisions 40 --rings 20 --spokes 64 \
       --levels 1,2 --meshes quadrangular,arc,jittered --set initial.seed=2   # and from no mesh's symmetry
+  /usr/bin/python3 tools/drape_meshes.py --scene scenes/cusick.toml --divisions 40 --rings 20 --spokes 64 \
+      --levels 1,2 --meshes quadrangular,arc,jittered --specimens 16 --jobs 2   # means over 16 specimens
 Standard library only.
 """
 import argparse
+import concurrent.futures
 import csv
+import os
+import statistics
 import json
 import pathlib
 import re
@@ -47,7 +58,7 @@ SMOKE = {"divisions": 8, "rings": 4, "spokes": 12}
 MESH_KEYS = re.compile(r"^\s*(mesh|divisions|rings|spokes)\s*=")
 BENDING_KEYS = re.compile(r"^\s*(stiffness_N_m|rigidity_Nm)\s*=")
 PATH_KEY = re.compile(r'^(\s*(?:warp|weft|mesh|material)\s*=\s*)"([^"]+)"')  # relative to the scene
-COLUMNS = ["mesh", "level", "nodes", "springs", "solver", "iterations", "residual_N", "converged",
+COLUMNS = ["mesh", "level", "specimen", "nodes", "springs", "solver", "iterations", "residual_N", "converged",
            "drape_coefficient", "folds", "solve_seconds"]
 
 
@@ -99,12 +110,12 @@ def stderr_of(out_dir):
     return out_dir.with_name(out_dir.name + ".stderr.txt")  # fabform wants its folder to itself
 
 
-def row_of(mesh, level, result):
+def row_of(mesh, level, specimen, result):
     """The run's row, or None when it has no drape figures (a state with no shadow)."""
     if not result.get("drape"):
         return None
     springs = result["fabric"]["springs"]
-    return {"mesh": mesh, "level": level, "nodes": result["fabric"]["nodes"], "springs": sum(springs.values()),
+    return {"mesh": mesh, "level": level, "specimen": specimen, "nodes": result["fabric"]["nodes"], "springs": sum(springs.values()),
             "solver": result["solver"],
             "iterations": result["iterations"], "residual_N": "%.3g" % result["residual_N"],
             "converged": result["converged"], "drape_coefficient": "%.4f" % result["drape_coefficient"],
@@ -145,6 +156,32 @@ def tables(rows, levels, meshes, scene_name):
     return "\n".join(lines) + "\n"
 
 
+def specimen_tables(rows, levels, meshes, specimens):
+    """Each mesh and level's mean DC and mean folds over its specimens (sample standard deviations),
+    and the largest difference between two mean fold counts."""
+    def spread(values):
+        return "%.2f" % statistics.stdev(values) if len(values) > 1 else "-"
+    lines = ["Over %d specimens (initial.seed 1 to %d): mean DC (%%) ± sd, mean folds ± sd [least-most]" % (specimens, specimens),
+             "", "| mesh | " + " | ".join("level %d" % L for L in levels) + " |", "|---|" + "---:|" * len(levels)]
+    means = []
+    for mesh in meshes:
+        cells = []
+        for level in levels:
+            runs = [r for r in rows if r["mesh"] == mesh and r["level"] == level and r["converged"]]
+            if not runs:
+                cells.append("-")
+                continue
+            dc = [100 * float(r["drape_coefficient"]) for r in runs]
+            folds = [r["folds"] for r in runs]
+            means.append(statistics.mean(folds))
+            cells.append("%.2f ± %s, %.2f ± %s [%d-%d] (%d of %d)" % (statistics.mean(dc), spread(dc), means[-1], spread(folds),
+                                                                    min(folds), max(folds), len(runs), specimens))
+        lines.append("| %s | %s |" % (mesh, " | ".join(cells)))
+    if means:
+        lines += ["", "Mean fold counts: %.2f to %.2f, %.2f apart (target: at most 1)" % (min(means), max(means), max(means) - min(means))]
+    return "\n".join(lines) + "\n"
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--scene", default=str(ROOT / "scenes" / "pin.toml"))
@@ -161,6 +198,9 @@ def main(argv=None):
     parser.add_argument("--out", default=str(ROOT / "results" / "drape_meshes"))
     parser.add_argument("--fabform", default=str(FABFORM), help="the fabform binary to run")
     parser.add_argument("--smoke", action="store_true", help="tiny meshes, levels 1 and 2")
+    parser.add_argument("--specimens", type=int, default=0,
+                        help="run every mesh and level with initial.seed 1 ... N and give the means")
+    parser.add_argument("--jobs", type=int, default=1, help="runs at once, each with cores / jobs threads")
     args = parser.parse_args(argv)
     base = SMOKE if args.smoke else {"divisions": args.divisions, "rings": args.rings, "spokes": args.spokes}
     levels = [1, 2] if args.smoke else [int(v) for v in args.levels.split(",")]
@@ -177,30 +217,42 @@ def main(argv=None):
     for mesh in meshes:
         if mesh not in MESHES:
             sys.exit("drape_meshes: --meshes: no mesh named '%s' (%s)" % (mesh, ", ".join(MESHES)))
-    rows, failed = [], []
+    if args.specimens < 0 or args.jobs < 1:
+        sys.exit("drape_meshes: --specimens must be 0 or more and --jobs 1 or more")
+    if args.jobs > 1:
+        extra += ["--threads", str(max(1, (os.cpu_count() or 1) // args.jobs))]
+    jobs = []
     for level in levels:
         for mesh in meshes:
             name = "%s_%d" % (mesh, level)
             path = out / "scenes" / (name + ".toml")
             path.write_text(variant(scene_text, scene_path.parent, mesh, level, base, args.rigidity))
-            status, result = run(args.fabform, path, out / "runs" / name, extra)
-            if result is None or status not in (0, 3):
-                failed.append("%s: exit %d, see %s" % (name, status, stderr_of(out / "runs" / name)))
-                continue
-            row = row_of(mesh, level, result)
-            if row is None:
-                failed.append("%s: no drape figures (%s)" % (name, result["message"]))
-                continue
-            rows.append(row)
-            if not result["converged"]:
-                failed.append("%s: %s" % (name, result["message"]))
-            print("%-14s level %d: %5d nodes, DC %.2f %%, %s s" % (mesh, level, rows[-1]["nodes"],
-                  100 * float(rows[-1]["drape_coefficient"]), rows[-1]["solve_seconds"]), file=sys.stderr)
+            for specimen in range(1, args.specimens + 1) if args.specimens else [0]:
+                run_name = "%s_s%d" % (name, specimen) if specimen else name
+                seed = ["--set", "initial.seed=%d" % specimen] if specimen else []
+                jobs.append((mesh, level, specimen, run_name, path, extra + seed))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        results = list(pool.map(lambda j: run(args.fabform, j[4], out / "runs" / j[3], j[5]), jobs))
+    rows, failed = [], []
+    for (mesh, level, specimen, name, _, _), (status, result) in zip(jobs, results):
+        if result is None or status not in (0, 3):
+            failed.append("%s: exit %d, see %s" % (name, status, stderr_of(out / "runs" / name)))
+            continue
+        row = row_of(mesh, level, specimen, result)
+        if row is None:
+            failed.append("%s: no drape figures (%s)" % (name, result["message"]))
+            continue
+        rows.append(row)
+        if not result["converged"]:
+            failed.append("%s: %s" % (name, result["message"]))
+        print("%-14s level %d: %5d nodes, DC %.2f %%, %s s" % (name, level, row["nodes"],
+              100 * float(row["drape_coefficient"]), row["solve_seconds"]), file=sys.stderr)
     with open(out / "drape_meshes.csv", "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
         writer.writerows(rows)
-    text = tables(rows, levels, meshes, scene_path.name)
+    text = (specimen_tables(rows, levels, meshes, args.specimens) if args.specimens
+            else tables(rows, levels, meshes, scene_path.name))
     (out / "table.md").write_text(text)
     print(text)
     for line in failed:

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The report of a parameter study (`fabform study`): STUDY_DIR/study.html with each collected
 figure plotted against each varied value (one line per combination of the other varied values),
-and the table of cases, study.csv, as it stands. It opens in a browser from the folder.
+and the table of cases, study.csv, as it stands (with specimens, each case's mean and scatter
+from study_specimens.csv above it). It opens in a browser from the folder.
 
 Why: a study is read as trends (what accuracy costs, how strain follows friction), which a table
 hides. Rendered headless with matplotlib (Agg). Cases without a finished result (cancelled,
@@ -98,12 +99,31 @@ def plot(folder: pathlib.Path, rows, figure: str, key: str, others: list, name: 
     return path
 
 
-def page(spec: dict, rows, pictures: list) -> str:
+def table(rows, good) -> str:
+    """An HTML table of CSV rows, a row that is not `good` marked."""
     e = html.escape
     columns = list(rows[0].keys()) if rows else []
     header = "".join(f"<th>{e(c)}</th>" for c in columns)
-    body = "".join(("<tr>" if r["converged"] == "true" else '<tr class="bad">') +
+    body = "".join(("<tr>" if good(r) else '<tr class="bad">') +
                    "".join(f"<td>{e(r[c])}</td>" for c in columns) + "</tr>" for r in rows)
+    return f"<table><tr>{header}</tr>\n{body}\n</table>"
+
+
+def specimens_section(folder: pathlib.Path, spec: dict) -> str:
+    """A study with specimens: each case's mean and scatter (study_specimens.csv), as a tester
+    reports them; a case where some specimen did not converge is marked."""
+    path = folder / "study_specimens.csv"
+    if spec.get("specimens", 1) < 2 or not path.is_file():
+        return ""
+    with path.open(newline="") as f:
+        rows = list(csv.DictReader(f))
+    return (f"<h2>Over {spec['specimens']} specimens (initial.seed 1 to {spec['specimens']}): mean, sample "
+            f"standard deviation, least and largest of the specimens that converged</h2>\n"
+            + table(rows, lambda r: r["converged"] == r["specimens"]))
+
+
+def page(spec: dict, rows, pictures: list, specimens: str = "") -> str:
+    e = html.escape
     converged = sum(r["converged"] == "true" for r in rows)
     images = "".join(f'<figure><img src="{e(p)}" alt="{e(alt)}"><figcaption>{e(alt)}</figcaption></figure>'
                      for p, alt in pictures)
@@ -125,10 +145,9 @@ figure {{ display: inline-block; margin: 0 1em 1em 0; }} img {{ max-width: 36em;
 fabform {e(spec.get('fabform_version', '?'))}.</p>
 <h2>Figures against the varied values</h2>
 {images}
+{specimens}
 <h2>Cases</h2>
-<table><tr>{header}</tr>
-{body}
-</table>
+{table(rows, lambda r: r["converged"] == "true")}
 <script>
 // Pictures that did not load are named in place; the count is what a test checks.
 window.addEventListener("load", () => {{
@@ -158,7 +177,7 @@ def make_report(folder: pathlib.Path) -> pathlib.Path:
         pool.starmap(plot, plots)
     pictures = [(name, f"{figure} against {key}") for _, _, figure, key, _, name in plots]
     path = folder / "study.html"
-    report.write_text(path, page(spec, rows, pictures))
+    report.write_text(path, page(spec, rows, pictures, specimens_section(folder, spec)))
     return path
 
 

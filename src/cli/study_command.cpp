@@ -15,6 +15,7 @@
 #include "fabform/study/study_case.hpp"
 #include "fabform/study/study_file.hpp"
 #include "fabform/study/study_record.hpp"
+#include "fabform/study/specimen_summary.hpp"
 #include "fabform/study/study_table.hpp"
 
 namespace fabform::cli {
@@ -137,10 +138,12 @@ int study(const StudyArguments& args) {
   }
   progress.finish();
   const int converged = write_study_table(spec, dir, endings);
+  if (spec.specimens > 1) write_specimen_summary(spec, dir, endings);
   write_report(dir);
   const int cases = static_cast<int>(spec.cases.size());
-  std::fprintf(stderr, "fabform: study %s: %d of %d cases converged; table %s/study.csv, report %s/study.html\n",
-               spec.name.c_str(), converged, cases, dir.c_str(), dir.c_str());
+  std::fprintf(stderr, "fabform: study %s: %d of %d cases converged; table %s/study.csv%s, report %s/study.html\n",
+               spec.name.c_str(), converged, cases, dir.c_str(),
+               spec.specimens > 1 ? (", specimens' means " + dir + "/study_specimens.csv").c_str() : "", dir.c_str());
   if (interrupt_signal() != 0) {
     std::fprintf(stderr, "fabform: interrupted; go on with: fabform study --resume %s\n", dir.c_str());
     return kExitInterruptedBase + interrupt_signal();

@@ -4,8 +4,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include <nlohmann/json.hpp>
-
 namespace fabform {
 
 namespace fs = std::filesystem;
@@ -29,6 +27,13 @@ CaseState case_state(const std::string& folder) {
   if (termination.empty()) return CaseState::missing;
   if (termination != "interrupted" && termination != "running") return CaseState::finished;
   return fs::exists(fs::path(folder) / "checkpoint.bin") ? CaseState::unfinished : CaseState::missing;
+}
+
+nlohmann::json finished_result(const std::string& folder) {
+  if (case_state(folder) != CaseState::finished) return nullptr;
+  std::ifstream in(fs::path(folder) / "result.json", std::ios::binary);
+  const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
+  return result.is_object() ? result : nlohmann::json();
 }
 
 std::vector<std::string> case_arguments(const StudySpec& spec, const std::string& dir, int index, int threads) {

@@ -1,5 +1,6 @@
 #include "fabform/study/study_cases.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
@@ -49,6 +50,19 @@ std::vector<StudyCase> grid_cases(const std::vector<StudyAxis>& axes) {
     cases = std::move(longer);
   }
   return axes.empty() ? std::vector<StudyCase>{} : cases;
+}
+
+std::vector<StudyCase> specimen_cases(const std::vector<StudyCase>& cases, int specimens, const SourceLocation& where) {
+  std::vector<StudyCase> out;
+  out.reserve(cases.size() * static_cast<std::size_t>(std::max(specimens, 0)));
+  for (const StudyCase& c : cases)
+    for (int k = 1; k <= specimens; ++k) {
+      StudyCase specimen = c;
+      const std::string seed = std::to_string(k);
+      specimen.values.push_back({kSpecimenSeedKey, seed, seed, where});
+      out.push_back(std::move(specimen));
+    }
+  return out;
 }
 
 std::vector<StudyCase> latin_hypercube(const std::vector<SampleRange>& ranges, int count, std::uint64_t seed) {

@@ -175,6 +175,27 @@ Scene scene_with(const StudySpec& spec, const std::vector<StudyValue>& values, c
   }
 }
 
+// Each case becomes its specimens, the seed their last column; a study that sets the seed itself
+// would run one specimen N times.
+void with_specimens(StudySpec* spec) {
+  std::vector<StudyValue> given = spec->fixed;
+  if (!spec->cases.empty()) given.insert(given.end(), spec->cases.front().values.begin(), spec->cases.front().values.end());
+  for (const StudyValue& v : given)
+    if (v.key == kSpecimenSeedKey)
+      throw InputError(v.where, "is the specimens' own: with specimens = " + std::to_string(spec->specimens) +
+                                    " the k-th specimen of every case runs with initial.seed = k");
+  spec->cases = specimen_cases(spec->cases, spec->specimens, spec->specimens_where);
+  spec->varied.push_back(kSpecimenSeedKey);
+}
+
+// Specimens differ only by what the seed draws: the start's imperfection or a jittered mesh.
+void check_specimens_differ(const StudySpec& spec, const Scene& scene) {
+  if (spec.specimens < 2 || scene.perturbation.amplitude_m > 0.0 || scene.fabric.mesh == FabricSpec::Mesh::jittered) return;
+  throw InputError(spec.specimens_where,
+                   "every specimen would be the same run: the scene's start has no imperfection (initial.perturbation_m "
+                   "is 0) and its mesh is not jittered, and the seed draws nothing else");
+}
+
 }  // namespace
 
 void check_study_against_scene(const StudySpec& spec) {
@@ -193,6 +214,7 @@ void check_study_against_scene(const StudySpec& spec) {
     std::vector<StudyValue> all = spec.fixed;
     all.insert(all.end(), c.values.begin(), c.values.end());
     const Scene scene = scene_with(spec, all, c.values.front());
+    check_specimens_differ(spec, scene);
     const std::vector<std::string> known = result_figure_paths(scene);
     for (std::size_t i = 0; i < spec.figures.size(); ++i)
       if (std::find(known.begin(), known.end(), spec.figures[i]) == known.end()) {
@@ -236,12 +258,18 @@ StudySpec parse_study(std::string_view text, const std::string& path) {
   const toml::node* set = study.take("set");
   if (set && !set->is_table()) study.fail("set", "must be a table of scene values: [study.set]");
   for (const auto& [key, node] : flattened(set)) spec.fixed.push_back(study_value(path, key, *node));
-  study.reject_unknown({"name", "scene", "description", "figures", "set"});
+  spec.specimens = static_cast<int>(study.integer("specimens", 1));
+  if (spec.specimens < 1 || spec.specimens > 1000) study.fail("specimens", "must be between 1 and 1000");
+  const toml::node* specimens = root["study"]["specimens"].node();
+  spec.specimens_where = specimens ? at(path, *specimens, "study.specimens") : SourceLocation{path, 0, "study.specimens"};
+  study.reject_unknown({"name", "scene", "description", "figures", "set", "specimens"});
 
   const int kinds = (root.contains("grid") ? 1 : 0) + (root.contains("case") ? 1 : 0) + (root.contains("sample") ? 1 : 0);
-  if (kinds != 1)
+  if (kinds > 1 || (kinds == 0 && spec.specimens == 1))
     top.fail(kinds == 0 ? "grid" : "case", "a study gives its cases one way: a [grid], a list of [[case]] or a [sample]");
-  if (const toml::node* grid = top.take("grid")) {
+  if (kinds == 0) {
+    spec.cases.emplace_back();  // the base scene's own specimens
+  } else if (const toml::node* grid = top.take("grid")) {
     const std::vector<StudyAxis> axes = grid_axes(path, *grid);
     for (const StudyAxis& a : axes) spec.varied.push_back(a.key);
     spec.cases = grid_cases(axes);
@@ -257,6 +285,7 @@ StudySpec parse_study(std::string_view text, const std::string& path) {
   for (const StudyValue& f : spec.fixed)
     if (std::find(spec.varied.begin(), spec.varied.end(), f.key) != spec.varied.end())
       throw InputError(f.where, "is both set for every case and varied");
+  if (spec.specimens > 1) with_specimens(&spec);
   for (std::size_t i = 0; i < spec.figures.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (spec.figures[i] == spec.figures[j])

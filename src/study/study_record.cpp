@@ -37,6 +37,7 @@ void write_study_record(const std::string& dir, const StudySpec& spec) {
   j["set"] = values_json(spec.fixed);
   j["varied"] = spec.varied;
   j["figures"] = spec.figures;
+  j["specimens"] = spec.specimens;
   nlohmann::json cases = nlohmann::json::array();
   for (const StudyCase& c : spec.cases) cases.push_back(values_json(c.values));
   j["cases"] = cases;
@@ -56,6 +57,7 @@ StudySpec read_study_record(const std::string& dir) {
     spec.fixed = values_of(j.at("set"), path);
     spec.varied = j.at("varied").get<std::vector<std::string>>();
     spec.figures = j.at("figures").get<std::vector<std::string>>();
+    spec.specimens = j.value("specimens", 1);  // a record from before specimens has none
     for (const auto& c : j.at("cases")) spec.cases.push_back({values_of(c, path)});
     return spec;
   } catch (const nlohmann::json::exception& error) {

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -13,14 +12,6 @@
 
 namespace fabform {
 namespace {
-
-// RFC 4180: a cell with a comma, a quote or a line break is quoted, its quotes doubled.
-std::string cell(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
 
 // 17 significant digits: the table holds the very double result.json holds, so two studies'
 // tables can be compared exactly.
@@ -33,36 +24,41 @@ std::string number_cell(const nlohmann::json& value) {
   return text;
 }
 
-nlohmann::json result_of(const std::string& folder) {
-  std::ifstream in(std::filesystem::path(folder) / "result.json", std::ios::binary);
-  return in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+}  // namespace
+
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
 }
 
-}  // namespace
+nlohmann::json case_result(const std::string& dir, int index, const CaseEndings& endings) {
+  return endings.count(index) ? nlohmann::json() : finished_result(case_folder(dir, index));
+}
 
 std::string study_table(const StudySpec& spec, const std::string& dir, const CaseEndings& endings) {
   std::ostringstream out;
   out << "case";
-  for (const std::string& key : spec.varied) out << ',' << cell(key);
-  for (const std::string& figure : spec.figures) out << ',' << cell(figure);
+  for (const std::string& key : spec.varied) out << ',' << csv_cell(key);
+  for (const std::string& figure : spec.figures) out << ',' << csv_cell(figure);
   out << ",converged,termination,iterations,wall_seconds\n";
   for (int i = 0; i < static_cast<int>(spec.cases.size()); ++i) {
     out << i;
-    for (const StudyValue& v : spec.cases[static_cast<std::size_t>(i)].values) out << ',' << cell(v.text);
-    const std::string folder = case_folder(dir, i);
-    const bool finished = case_state(folder) == CaseState::finished && !endings.count(i);
-    const nlohmann::json result = finished ? result_of(folder) : nlohmann::json();
+    for (const StudyValue& v : spec.cases[static_cast<std::size_t>(i)].values) out << ',' << csv_cell(v.text);
+    const nlohmann::json result = case_result(dir, i, endings);
+    const bool finished = !result.is_null();
     for (const std::string& figure : spec.figures) {
       const nlohmann::json::json_pointer pointer(figure_pointer(figure));
       out << ',' << (finished && result.contains(pointer) ? number_cell(result[pointer]) : "");
     }
     if (finished) {
-      out << ',' << number_cell(result.value("converged", false)) << ',' << cell(result.value("termination", ""))
+      out << ',' << number_cell(result.value("converged", false)) << ',' << csv_cell(result.value("termination", ""))
           << ',' << number_cell(result.value("iterations", nlohmann::json())) << ','
           << number_cell(result.value("wall_seconds", nlohmann::json())) << '\n';
     } else {
       const auto ending = endings.find(i);
-      out << ",false," << cell(ending != endings.end() ? ending->second : "missing") << ",,\n";
+      out << ",false," << csv_cell(ending != endings.end() ? ending->second : "missing") << ",,\n";
     }
   }
   return out.str();
@@ -73,8 +69,7 @@ int write_study_table(const StudySpec& spec, const std::string& dir, const CaseE
   write_file_atomically((std::filesystem::path(dir) / "study.csv").string(), text);
   int converged = 0;
   for (int i = 0; i < static_cast<int>(spec.cases.size()); ++i)
-    if (!endings.count(i) && case_state(case_folder(dir, i)) == CaseState::finished &&
-        result_of(case_folder(dir, i)).value("converged", false))
+    if (const nlohmann::json result = case_result(dir, i, endings); !result.is_null() && result.value("converged", false))
       ++converged;
   return converged;
 }

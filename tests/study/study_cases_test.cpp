@@ -47,5 +47,19 @@ TEST(StudyCases, LatinHypercubeUsesEveryStratumOnceAndRepeatsForItsSeed) {
   EXPECT_TRUE(differs);
 }
 
+TEST(StudyCases, SpecimensRepeatEveryCaseWithSeedsOneToN) {
+  const std::vector<StudyCase> cases = {{{{"solver.name", "'newton'", "newton", {}}}}, {{{"solver.name", "'relax'", "relax", {}}}}};
+  const std::vector<StudyCase> specimens = specimen_cases(cases, 2, {"s.toml", 3, "study.specimens"});
+  ASSERT_EQ(specimens.size(), 4u);
+  const char* names[] = {"newton", "newton", "relax", "relax"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    ASSERT_EQ(specimens[i].values.size(), 2u);
+    EXPECT_EQ(specimens[i].values[0].text, names[i]);
+    EXPECT_EQ(specimens[i].values[1].key, kSpecimenSeedKey);
+    EXPECT_EQ(specimens[i].values[1].toml, std::to_string(1 + i % 2));
+    EXPECT_EQ(specimens[i].values[1].where.line, 3);
+  }
+}
+
 }  // namespace
 }  // namespace fabform

@@ -98,5 +98,55 @@ TEST(StudyFile, CasesMustSetTheSameKeysAndOneKindOfCases) {
   EXPECT_NE(error_of(study_text("")).message().find("one way"), std::string::npos);
 }
 
+// [study] specimens = N: each case N times, initial.seed 1 … N its last column (the dome with a
+// start imperfection, so that the seeds differ).
+std::string specimens_text(const std::string& specimens, const std::string& set, const std::string& body) {
+  return "[study]\nscene = \"" + test::source_path("scenes/dome.toml") + "\"\nfigures = [\"residual_N\"]\nspecimens = " +
+         specimens + "\n\n[study.set]\n\"fabric.divisions\" = [10, 10]\n" + set + "\n" + body;
+}
+
+TEST(StudyFile, SpecimensRunEveryCaseWithSeedsOneToN) {
+  test::TempDir dir;
+  const StudySpec spec = load_study(dir.write("s.toml", specimens_text(
+      "3", "\"initial.perturbation_m\" = 1e-4\n", "[grid]\n\"solver.tolerance_N\" = [1e-5, 1e-6]\n")));
+  EXPECT_EQ(spec.specimens, 3);
+  ASSERT_EQ(spec.varied, (std::vector<std::string>{"solver.tolerance_N", "initial.seed"}));
+  ASSERT_EQ(spec.cases.size(), 6u);
+  const char* tolerance[] = {"1e-05", "1e-05", "1e-05", "1e-06", "1e-06", "1e-06"};
+  const char* seed[] = {"1", "2", "3", "1", "2", "3"};
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(spec.cases[i].values[0].text, tolerance[i]);
+    EXPECT_EQ(spec.cases[i].values[1].toml, seed[i]);
+  }
+}
+
+TEST(StudyFile, SpecimensAloneAreTheBaseScenesOwn) {
+  test::TempDir dir;
+  const StudySpec spec = load_study(dir.write("s.toml", specimens_text("2", "\"initial.perturbation_m\" = 1e-4\n", "")));
+  ASSERT_EQ(spec.varied, std::vector<std::string>{"initial.seed"});
+  ASSERT_EQ(spec.cases.size(), 2u);
+  EXPECT_EQ(spec.cases[1].values.size(), 1u);
+  EXPECT_EQ(spec.cases[1].values[0].toml, "2");
+}
+
+TEST(StudyFile, SpecimensThatCouldNotDifferOrWhoseSeedIsSetAreRefused) {
+  const InputError same = error_of(specimens_text("4", "", "[grid]\n\"solver.tolerance_N\" = [1e-5]\n"));
+  EXPECT_EQ(same.where().line, 4);
+  EXPECT_EQ(same.where().key, "study.specimens");
+  EXPECT_NE(same.message().find("every specimen would be the same run"), std::string::npos) << same.what();
+  const InputError seeded = error_of(specimens_text(
+      "4", "\"initial.perturbation_m\" = 1e-4\n", "[grid]\n\"initial.seed\" = [1, 2]\n"));
+  EXPECT_EQ(seeded.where().line, 11);
+  EXPECT_EQ(seeded.where().key, "initial.seed");
+  const InputError none = error_of(specimens_text("0", "", "[grid]\n\"solver.tolerance_N\" = [1e-5]\n"));
+  EXPECT_EQ(none.where().line, 4);
+  EXPECT_NE(none.message().find("between 1 and 1000"), std::string::npos) << none.what();
+  // Specimens alone are the base scene's; one specimen is an ordinary study, which needs cases.
+  EXPECT_NE(error_of(specimens_text("1", "", "")).message().find("one way"), std::string::npos);
+  test::TempDir dir;
+  const StudySpec one = load_study(dir.write("s.toml", specimens_text("1", "", "[grid]\n\"solver.tolerance_N\" = [1e-5]\n")));
+  EXPECT_EQ(one.varied, std::vector<std::string>{"solver.tolerance_N"});
+}
+
 }  // namespace
 }  // namespace fabform

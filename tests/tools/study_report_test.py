@@ -10,6 +10,7 @@ import csv
 import os
 import pathlib
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -79,6 +80,66 @@ class StudyReport(unittest.TestCase):
             self.assertEqual(len(done.stderr.splitlines()), 1, done.stderr)
             self.assertIn("study.json", done.stderr)
             self.assertFalse((pathlib.Path(tmp) / "study.html").exists())
+
+
+SPECIMENS = f"""[study]
+name = "dome_specimens"
+scene = "{ROOT / 'scenes' / 'dome.toml'}"
+figures = ["figures.max_warp_strain", "residual_recomputed_N"]
+specimens = 3
+
+[study.set]
+"fabric.divisions" = [12, 12]
+"initial.perturbation_m" = 2e-3
+
+[grid]
+"solver.tolerance_N" = [1e-4, 1e-6]
+"""
+
+
+class StudySpecimens(unittest.TestCase):
+    """A study with specimens: each case run with initial.seed 1 to 3, and study_specimens.csv's
+    means and scatter equal to those of study.csv's rows, computed here with Python's statistics."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = pathlib.Path(tempfile.mkdtemp(prefix="fabform-study-specimens-"))
+        (cls.folder / "specimens.toml").write_text(SPECIMENS)
+        cls.out = cls.folder / "out"
+        done = subprocess.run([FABFORM, "study", str(cls.folder / "specimens.toml"), "--out", str(cls.out), "--jobs", "2"],
+                              capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        cls.stderr = done.stderr
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.folder, ignore_errors=True)
+
+    def test_the_means_and_deviations_are_those_of_the_specimens_rows(self):
+        with (self.out / "study.csv").open(newline="") as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual([r["initial.seed"] for r in rows], ["1", "2", "3"] * 2)
+        with (self.out / "study_specimens.csv").open(newline="") as f:
+            summary = list(csv.DictReader(f))
+        self.assertEqual(len(summary), 2)
+        for case, row in enumerate(summary):
+            specimens = rows[3 * case:3 * case + 3]
+            self.assertEqual(row["solver.tolerance_N"], specimens[0]["solver.tolerance_N"])
+            self.assertEqual((row["specimens"], row["finished"], row["converged"]), ("3", "3", "3"))
+            for figure in ("figures.max_warp_strain", "residual_recomputed_N"):
+                readings = [float(r[figure]) for r in specimens]
+                self.assertGreater(max(readings), min(readings), "the seeds made no difference")
+                scale = max(abs(v) for v in readings)
+                self.assertAlmostEqual(float(row[figure + " mean"]), statistics.mean(readings), delta=1e-14 * scale)
+                self.assertAlmostEqual(float(row[figure + " sd"]), statistics.stdev(readings), delta=1e-12 * scale)
+                self.assertEqual(float(row[figure + " min"]), min(readings))
+                self.assertEqual(float(row[figure + " max"]), max(readings))
+        self.assertIn("study_specimens.csv", self.stderr)
+
+    def test_the_report_shows_the_specimens_table(self):
+        page = (self.out / "study.html").read_text()
+        self.assertIn("Over 3 specimens (initial.seed 1 to 3)", page)
+        self.assertIn("<th>figures.max_warp_strain mean</th>", page)
 
 
 if __name__ == "__main__":

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "fabform/study/study_spec.hpp"
 
 namespace fabform {
@@ -18,6 +20,9 @@ enum class CaseState {
 };
 
 CaseState case_state(const std::string& folder);
+
+/// Its result.json when it holds a finished result; null when it does not.
+nlohmann::json finished_result(const std::string& folder);
 
 /// The termination its result.json gives ("converged", "not converged", ...), "" without one.
 std::string case_termination(const std::string& folder);

@@ -18,6 +18,12 @@ struct StudyAxis {
 /// Every combination, the last axis changing fastest (as nested loops would write them).
 std::vector<StudyCase> grid_cases(const std::vector<StudyAxis>& axes);
 
+/// The seed of a specimen's imperfection: the key a study with specimens varies last.
+inline constexpr const char* kSpecimenSeedKey = "initial.seed";
+
+/// Every case `specimens` times in a row, the k-th with initial.seed = k (1 … specimens).
+std::vector<StudyCase> specimen_cases(const std::vector<StudyCase>& cases, int specimens, const SourceLocation& where);
+
 /// A sampled key: a closed range; whole numbers only when both ends are TOML integers.
 struct SampleRange {
   std::string key;

@@ -33,6 +33,11 @@ struct StudySpec {
   std::vector<StudyCase> cases;
   std::vector<std::string> figures;  // result.json paths (result_figures.hpp)
   std::vector<SourceLocation> figure_where;  // where each was listed; not kept in study.json
+  // [study] specimens: N > 1 runs every case N times with initial.seed 1 … N (the last varied
+  // key), as a tester tests several specimens of one fabric; study_specimens.csv gives each
+  // case's mean and scatter (specimen_summary.hpp).
+  int specimens = 1;
+  SourceLocation specimens_where;  // not kept in study.json
 };
 
 }  // namespace fabform

@@ -6,6 +6,8 @@
 #include <map>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "fabform/study/study_spec.hpp"
 
 namespace fabform {
@@ -13,6 +15,12 @@ namespace fabform {
 /// How the cases that ended without a finished result ended, by index; the others' rows come
 /// from their result.json.
 using CaseEndings = std::map<int, std::string>;
+
+/// What a case's row shows: its finished result.json; null when it has none or ended otherwise.
+nlohmann::json case_result(const std::string& dir, int index, const CaseEndings& endings);
+
+/// RFC 4180: a cell with a comma, a quote or a line break is quoted, its quotes doubled.
+std::string csv_cell(const std::string& text);
 
 /// The table's text.
 std::string study_table(const StudySpec& spec, const std::string& dir, const CaseEndings& endings);
