@@ -12,10 +12,10 @@
 #include "fabform/study/child_process.hpp"
 #include "fabform/study/local_pool.hpp"
 #include "fabform/study/slurm_backend.hpp"
+#include "fabform/study/specimen_summary.hpp"
 #include "fabform/study/study_case.hpp"
 #include "fabform/study/study_file.hpp"
 #include "fabform/study/study_record.hpp"
-#include "fabform/study/specimen_summary.hpp"
 #include "fabform/study/study_table.hpp"
 
 namespace fabform::cli {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "fabform/analysis/drape_figures.hpp"
 #include "fabform/model/potential_energy.hpp"
@@ -95,15 +96,16 @@ TEST(CusickDrape, SoftKnitFoldsOverTheDisc) {
 // buckles (item 2) and a seeded jitter of the start 0.1 mm in z (item 4), meshed as shipped
 // (quadrangular, 40 divisions), as rings on spokes (20 on 64: a comparable 1281 nodes) or as the
 // lattice with its inner nodes jittered by up to 0.2 of the spacing (the same seed's).
-Draped cusick(const std::string& compression, FabricSpec::Mesh mesh = FabricSpec::Mesh::quadrangular) {
-  Scene scene = load_scene(test::source_path("scenes/cusick.toml"),
-                           {{"fabric.compression", compression}, {"initial.perturbation_m", "1e-4"}, {"initial.seed", "1"}});
+Draped cusick(const std::string& compression, FabricSpec::Mesh mesh = FabricSpec::Mesh::quadrangular, int seed = 1) {
+  Scene scene = load_scene(test::source_path("scenes/cusick.toml"), {{"fabric.compression", compression},
+                                                                      {"initial.perturbation_m", "1e-4"},
+                                                                      {"initial.seed", std::to_string(seed)}});
   scene.fabric.mesh = mesh;
   if (mesh == FabricSpec::Mesh::arc) {
     scene.fabric.rings = 20;
     scene.fabric.spokes = 64;
   }
-  if (mesh == FabricSpec::Mesh::jittered) scene.fabric.jitter = kMaxJitter;  // the key's default; the seed is 1's
+  if (mesh == FabricSpec::Mesh::jittered) scene.fabric.jitter = kMaxJitter;  // the key's default; the seed is the start's
   return drape(scene);
 }
 
@@ -119,19 +121,27 @@ TEST(CusickDrape, BucklingKeepsTheAreaThatTensionOnlyLoses) {
 }
 
 // Without compression and perturbation the quadrangular mesh gave 4 folds and the arc mesh none
-// (issue 22); with them the two meshes give 9 and 8, and the jittered lattice, which has no
-// symmetry to impose a count, 10 (README, "Drape": seeds and refinements are measured there, by
-// tools/drape_meshes.py, and spread further). The jittered mesh is held to folding, not to the
-// issue's 1 apart, which no mesh meets over seeds: a seed alone moves a mesh's count by 2 or 3.
+// (issue 22). With them a specimen's count depends on its imperfection as a real specimen's does
+// (near 9 folds the drape has several rests of nearly equal energy: one seed gives 8 folds on a
+// mesh, the next 10), so the count is held as a tester reports it, over specimens: four of each
+// mesh, seeds 1 to 4, every one folding at least 7 times and the three meshes' mean counts within
+// 1 of each other (README, "Drape": more specimens and a refinement, by tools/drape_meshes.py).
 TEST(CusickDrape, FoldCountComesFromTheFabricNotTheMesh) {
   using Mesh = FabricSpec::Mesh;
-  const Draped quadrangular = cusick("buckling", Mesh::quadrangular), arc = cusick("buckling", Mesh::arc),
-               jittered = cusick("buckling", Mesh::jittered);
-  for (const Draped* d : {&quadrangular, &arc, &jittered}) {
-    ASSERT_TRUE(d->summary.converged()) << d->summary.message;
-    EXPECT_GE(d->figures.folds, 7);
+  constexpr int kSpecimens = 4;
+  std::vector<double> means;
+  for (const Mesh mesh : {Mesh::quadrangular, Mesh::arc, Mesh::jittered}) {
+    double folds = 0.0;
+    for (int seed = 1; seed <= kSpecimens; ++seed) {
+      const Draped d = cusick("buckling", mesh, seed);
+      ASSERT_TRUE(d.summary.converged()) << d.summary.message;
+      EXPECT_GE(d.figures.folds, 7) << "mesh " << static_cast<int>(mesh) << ", seed " << seed;
+      folds += d.figures.folds;
+    }
+    means.push_back(folds / kSpecimens);
   }
-  EXPECT_LE(std::abs(quadrangular.figures.folds - arc.figures.folds), 1);
+  const auto [least, most] = std::minmax_element(means.begin(), means.end());
+  EXPECT_LE(*most - *least, 1.0) << "mean folds: " << means[0] << ", " << means[1] << ", " << means[2];
 }
 
 // Seed 000's damped dynamics: kinetic plus potential energy never rises along the trajectory.
