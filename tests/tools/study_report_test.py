@@ -37,19 +37,28 @@ figures = ["residual_recomputed_N", "figures.max_warp_strain"]
 PICTURES = (2 + 2) * 2  # (figures + iterations + wall seconds) × varied keys
 
 
-class StudyReport(unittest.TestCase):
+class RealStudy(unittest.TestCase):
+    """A test class whose study (its STUDY text) runs once, with `fabform study --jobs 2`, into
+    self.out; its standard error is self.stderr."""
+    STUDY = ""
+
     @classmethod
     def setUpClass(cls):
         cls.folder = pathlib.Path(tempfile.mkdtemp(prefix="fabform-study-report-"))
-        (cls.folder / "small.toml").write_text(STUDY)
+        (cls.folder / "study.toml").write_text(cls.STUDY)
         cls.out = cls.folder / "out"
-        done = subprocess.run([FABFORM, "study", str(cls.folder / "small.toml"), "--out", str(cls.out), "--jobs", "2"],
+        done = subprocess.run([FABFORM, "study", str(cls.folder / "study.toml"), "--out", str(cls.out), "--jobs", "2"],
                               capture_output=True, text=True)
         assert done.returncode == 0, done.stderr
+        cls.stderr = done.stderr
 
     @classmethod
     def tearDownClass(cls):
         shutil.rmtree(cls.folder, ignore_errors=True)
+
+
+class StudyReport(RealStudy):
+    STUDY = STUDY
 
     def test_the_study_writes_its_report_with_every_plot_and_the_table(self):
         page = (self.out / "study.html").read_text()
@@ -97,23 +106,10 @@ specimens = 3
 """
 
 
-class StudySpecimens(unittest.TestCase):
+class StudySpecimens(RealStudy):
     """A study with specimens: each case run with initial.seed 1 to 3, and study_specimens.csv's
     means and scatter equal to those of study.csv's rows, computed here with Python's statistics."""
-
-    @classmethod
-    def setUpClass(cls):
-        cls.folder = pathlib.Path(tempfile.mkdtemp(prefix="fabform-study-specimens-"))
-        (cls.folder / "specimens.toml").write_text(SPECIMENS)
-        cls.out = cls.folder / "out"
-        done = subprocess.run([FABFORM, "study", str(cls.folder / "specimens.toml"), "--out", str(cls.out), "--jobs", "2"],
-                              capture_output=True, text=True)
-        assert done.returncode == 0, done.stderr
-        cls.stderr = done.stderr
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.folder, ignore_errors=True)
+    STUDY = SPECIMENS
 
     def test_the_means_and_deviations_are_those_of_the_specimens_rows(self):
         with (self.out / "study.csv").open(newline="") as f:
