@@ -20,7 +20,7 @@ RunInputs describe_inputs(const Scene& scene, const std::vector<SceneOverride>& 
   add("scene", scene.path);
   add("warp", scene.warp_path);
   add("weft", scene.weft_path);
-  if (scene.shear.on) add("shear", scene.shear.material_path);
+  if (scene.shear.on && !scene.shear.material_path.empty()) add("shear", scene.shear.material_path);  // not a rigidity G
   for (const BodySpec& body : scene.bodies) add("body " + body.name, body.mesh_path);
   return inputs;
 }

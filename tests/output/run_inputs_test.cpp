@@ -61,6 +61,15 @@ TEST_F(RunInputsTest, TheShearTableIsHashed) {
   EXPECT_NE(input_change(before, describe()).find("shear"), std::string::npos);
 }
 
+// A shear rigidity G is a number of the scene, no file: nothing more is hashed (a run with one
+// failed with "cannot be read" when its empty table path was hashed).
+TEST_F(RunInputsTest, AShearRigidityReadsNoFile) {
+  dir.write("scene.toml", test::slurp(dir.path("scene.toml")) + "[shear]\nrigidity_N_m = 41.0\n");
+  const RunInputs inputs = describe();
+  ASSERT_EQ(inputs.files.size(), 4u);
+  for (const auto& file : inputs.files) EXPECT_NE(file.role, "shear");
+}
+
 TEST_F(RunInputsTest, ReadBackFromResultJson) {
   dir.write("result.json",
             "{\"scene_file\": \"/s/scene.toml\", \"overrides\": [{\"key\": \"solver.C\", \"value\": \"3\"}],"
