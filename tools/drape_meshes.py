@@ -22,7 +22,7 @@ and mean fold count with their sample standard deviations, and how far apart the
 of the meshes and levels lie (issue 22's target: at most 1).
 
 Writes into --out (default results/drape_meshes): drape_meshes.csv (one row a run), table.md
-(the Figure 9 table and the refinement table, printed too) and runs/ (each run's result.json and
+(the Figure 9 table and the refinement table, or with --specimens the specimens' table; printed too) and runs/ (each run's result.json and
 stderr, as NAME.stderr.txt). Exit status 1 if a run fails or does not converge.
 
 Usage (after tools/setup.sh, from anywhere):
@@ -49,6 +49,7 @@ import pathlib
 import re
 import subprocess
 import sys
+import tomllib
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 FABFORM = ROOT / "build" / "fabform"
@@ -182,6 +183,16 @@ def specimen_tables(rows, levels, meshes, specimens):
     return "\n".join(lines) + "\n"
 
 
+def perturbed(scene_text, settings):
+    """Whether the runs start from a seeded imperfection: the scene's or a --set's perturbation_m > 0."""
+    amplitude = tomllib.loads(scene_text).get("initial", {}).get("perturbation_m", 0.0)
+    for setting in settings:
+        key, _, value = setting.partition("=")
+        if key == "initial.perturbation_m":
+            amplitude = float(value)
+    return amplitude > 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--scene", default=str(ROOT / "scenes" / "pin.toml"))
@@ -219,6 +230,11 @@ def main(argv=None):
             sys.exit("drape_meshes: --meshes: no mesh named '%s' (%s)" % (mesh, ", ".join(MESHES)))
     if args.specimens < 0 or args.jobs < 1:
         sys.exit("drape_meshes: --specimens must be 0 or more and --jobs 1 or more")
+    if args.specimens and any(setting.startswith("initial.seed=") for setting in args.set):
+        sys.exit("drape_meshes: --specimens sets initial.seed itself (1 to N); drop --set initial.seed")
+    if args.specimens > 1 and "jittered" not in meshes and not perturbed(scene_text, args.set):
+        sys.exit("drape_meshes: --specimens: every specimen would be the same run (no initial.perturbation_m, "
+                 "no jittered mesh)")
     if args.jobs > 1:
         extra += ["--threads", str(max(1, (os.cpu_count() or 1) // args.jobs))]
     jobs = []
@@ -232,9 +248,13 @@ def main(argv=None):
                 seed = ["--set", "initial.seed=%d" % specimen] if specimen else []
                 jobs.append((mesh, level, specimen, run_name, path, extra + seed))
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        results = list(pool.map(lambda j: run(args.fabform, j[4], out / "runs" / j[3], j[5]), jobs))
+        futures = [pool.submit(run, args.fabform, j[4], out / "runs" / j[3], j[5]) for j in jobs]
+        for done, future in enumerate(concurrent.futures.as_completed(futures), start=1):
+            future.result()
+            print("drape_meshes: %d of %d runs done" % (done, len(jobs)), file=sys.stderr)
     rows, failed = [], []
-    for (mesh, level, specimen, name, _, _), (status, result) in zip(jobs, results):
+    for (mesh, level, specimen, name, _, _), future in zip(jobs, futures):
+        status, result = future.result()
         if result is None or status not in (0, 3):
             failed.append("%s: exit %d, see %s" % (name, status, stderr_of(out / "runs" / name)))
             continue

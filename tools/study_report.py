@@ -113,11 +113,17 @@ def specimens_section(folder: pathlib.Path, spec: dict) -> str:
     """A study with specimens: each case's mean and scatter (study_specimens.csv), as a tester
     reports them; a case where some specimen did not converge is marked."""
     path = folder / "study_specimens.csv"
-    if spec.get("specimens", 1) < 2 or not path.is_file():
+    specimens = spec.get("specimens", 1)
+    if not isinstance(specimens, int):
+        raise pc.InputError(f"{folder / 'study.json'}: malformed (specimens is not a whole number)")
+    if specimens < 2 or not path.is_file():
         return ""
     with path.open(newline="") as f:
         rows = list(csv.DictReader(f))
-    return (f"<h2>Over {spec['specimens']} specimens (initial.seed 1 to {spec['specimens']}): mean, sample "
+    for column in ("specimens", "converged"):
+        if rows and column not in rows[0]:
+            raise pc.InputError(f"{path}:1: no column '{column}'")
+    return (f"<h2>Over {specimens} specimens (initial.seed 1 to {specimens}): mean, sample "
             f"standard deviation, least and largest of the specimens that converged</h2>\n"
             + table(rows, lambda r: r["converged"] == r["specimens"]))
 

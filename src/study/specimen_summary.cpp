@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <vector>
@@ -13,11 +12,7 @@
 namespace fabform {
 namespace {
 
-std::string number(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
+std::string number(double value) { return number_cell(nlohmann::json(value)); }
 
 // Mean, sample standard deviation, least, largest; the deviation needs two readings.
 std::string statistics(const std::vector<double>& readings) {
@@ -36,7 +31,7 @@ std::string statistics(const std::vector<double>& readings) {
 
 std::string specimen_summary(const StudySpec& spec, const std::string& dir, const CaseEndings& endings) {
   std::ostringstream out;
-  out << "case";
+  out << "cases";
   const std::size_t shown_keys = spec.varied.empty() ? 0 : spec.varied.size() - 1;  // all but the seed
   for (std::size_t k = 0; k < shown_keys; ++k) out << ',' << csv_cell(spec.varied[k]);
   out << ",specimens,finished,converged";
@@ -44,8 +39,8 @@ std::string specimen_summary(const StudySpec& spec, const std::string& dir, cons
     for (const char* statistic : {" mean", " sd", " min", " max"}) out << ',' << csv_cell(figure + statistic);
   out << '\n';
   const int per_case = std::max(spec.specimens, 1);
-  for (int first = 0, row = 0; first < static_cast<int>(spec.cases.size()); first += per_case, ++row) {
-    out << row;
+  for (int first = 0; first < static_cast<int>(spec.cases.size()); first += per_case) {
+    out << first << '-' << std::min(first + per_case, static_cast<int>(spec.cases.size())) - 1;
     const std::vector<StudyValue>& values = spec.cases[static_cast<std::size_t>(first)].values;
     for (std::size_t k = 0; k < shown_keys && k < values.size(); ++k) out << ',' << csv_cell(values[k].text);
     int finished = 0;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fabform/output/atomic_file.hpp"
+#include "fabform/study/study_cases.hpp"
 
 namespace fabform {
 namespace {
@@ -22,6 +23,16 @@ std::vector<StudyValue> values_of(const nlohmann::json& list, const std::string&
     values.push_back({v.at("key").get<std::string>(), v.at("value").get<std::string>(), v.at("text").get<std::string>(),
                       {file, 0, v.at("key").get<std::string>()}});
   return values;
+}
+
+// A study with specimens groups its cases in runs of `specimens`, the seed varied last.
+void check_specimens(const StudySpec& spec) {
+  if (spec.specimens == 1) return;
+  if (spec.specimens < 1 || spec.cases.size() % static_cast<std::size_t>(spec.specimens) != 0 || spec.varied.empty() ||
+      spec.varied.back() != kSpecimenSeedKey)
+    throw InputError(spec.specimens_where, "malformed study record: " + std::to_string(spec.specimens) +
+                                               " specimens do not group its " + std::to_string(spec.cases.size()) +
+                                               " cases, or initial.seed is not its last varied key");
 }
 
 }  // namespace
@@ -58,7 +69,9 @@ StudySpec read_study_record(const std::string& dir) {
     spec.varied = j.at("varied").get<std::vector<std::string>>();
     spec.figures = j.at("figures").get<std::vector<std::string>>();
     spec.specimens = j.value("specimens", 1);  // a record from before specimens has none
+    spec.specimens_where = {path, 0, "specimens"};
     for (const auto& c : j.at("cases")) spec.cases.push_back({values_of(c, path)});
+    check_specimens(spec);
     return spec;
   } catch (const nlohmann::json::exception& error) {
     throw InputError({path, 0, ""}, std::string("malformed study record: ") + error.what());

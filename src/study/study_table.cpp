@@ -11,10 +11,7 @@
 #include "fabform/study/study_case.hpp"
 
 namespace fabform {
-namespace {
 
-// 17 significant digits: the table holds the very double result.json holds, so two studies'
-// tables can be compared exactly.
 std::string number_cell(const nlohmann::json& value) {
   if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
   if (value.is_number_integer()) return std::to_string(value.get<long long>());
@@ -23,8 +20,6 @@ std::string number_cell(const nlohmann::json& value) {
   std::snprintf(text, sizeof text, "%.17g", value.get<double>());
   return text;
 }
-
-}  // namespace
 
 std::string csv_cell(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;

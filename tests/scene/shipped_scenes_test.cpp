@@ -99,7 +99,8 @@ INSTANTIATE_TEST_SUITE_P(Shipped, ShippedScene,
                                            SceneCase{"scenes/pin.toml", "newton", 1e-6, 0},
                                            // The clamp holds the centre half a millimetre over the
                                            // disc, so the overhang touches only its rim (8 nodes).
-                                           SceneCase{"scenes/cusick.toml", "newton", 1e-6, 4}),
+                                           SceneCase{"scenes/cusick.toml", "newton", 1e-6, 4},
+                                           SceneCase{"scenes/cusick_woven.toml", "newton", 1e-6, 4}),
                          [](const auto& case_info) {
                            const std::string file = case_info.param.file;  // scenes/NAME.toml
                            return file.substr(7, file.size() - 12);

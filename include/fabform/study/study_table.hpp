@@ -19,6 +19,9 @@ using CaseEndings = std::map<int, std::string>;
 /// What a case's row shows: its finished result.json; null when it has none or ended otherwise.
 nlohmann::json case_result(const std::string& dir, int index, const CaseEndings& endings);
 
+/// A number as the table holds it: 17 significant digits, the very double of result.json.
+std::string number_cell(const nlohmann::json& value);
+
 /// RFC 4180: a cell with a comma, a quote or a line break is quoted, its quotes doubled.
 std::string csv_cell(const std::string& text);
 
