@@ -42,11 +42,11 @@ Standard library only.
 import argparse
 import concurrent.futures
 import csv
-import os
-import statistics
 import json
+import os
 import pathlib
 import re
+import statistics
 import subprocess
 import sys
 import tomllib
@@ -232,9 +232,9 @@ def main(argv=None):
         sys.exit("drape_meshes: --specimens must be 0 or more and --jobs 1 or more")
     if args.specimens and any(setting.startswith("initial.seed=") for setting in args.set):
         sys.exit("drape_meshes: --specimens sets initial.seed itself (1 to N); drop --set initial.seed")
-    if args.specimens > 1 and "jittered" not in meshes and not perturbed(scene_text, args.set):
-        sys.exit("drape_meshes: --specimens: every specimen would be the same run (no initial.perturbation_m, "
-                 "no jittered mesh)")
+    if args.specimens > 1 and any(m != "jittered" for m in meshes) and not perturbed(scene_text, args.set):
+        sys.exit("drape_meshes: --specimens: every specimen of a mesh but the jittered one would be the same run "
+                 "(no initial.perturbation_m)")
     if args.jobs > 1:
         extra += ["--threads", str(max(1, (os.cpu_count() or 1) // args.jobs))]
     jobs = []
