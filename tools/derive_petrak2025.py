@@ -69,9 +69,9 @@ def study(rows):
             '"fabric.warp" = "../materials/petrak2025/%s_warp.csv"' % fabric["id"],
             '"fabric.weft" = "../materials/petrak2025/%s_weft.csv"' % fabric["id"],
             '"fabric.areal_mass_g_m2" = %s' % fabric["areal_mass_g_m2"],
-            '"bending.rigidity_uNm" = [%g, %g]' % (float(fabric["bending_warp_g_mm2_s2"]) / 1000.0,
+            '"bending.rigidity_uNm" = [%r, %r]' % (float(fabric["bending_warp_g_mm2_s2"]) / 1000.0,
                                                 float(fabric["bending_weft_g_mm2_s2"]) / 1000.0),
-            '"shear.rigidity_N_m" = %g' % (float(fabric["shear_g_s2"]) / 1000.0),
+            '"shear.rigidity_N_m" = %r' % (float(fabric["shear_g_s2"]) / 1000.0),
         ]
     return "\n".join(lines) + "\n"
 

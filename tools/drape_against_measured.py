@@ -27,34 +27,61 @@ class InputError(Exception):
     pass
 
 
-def read_csv(path):
+SUMMARY_COLUMNS = ("fabric.warp", "specimens", "converged", "drape_coefficient mean", "drape_coefficient sd",
+                   "drape.folds mean")
+MEASURED_COLUMNS = ("id", "composition", "areal_mass_g_m2", "measured_dc", "clo3d_dc")
+
+
+def read_csv(path, columns):
+    """The rows of a CSV (its # lines skipped) that has every one of `columns`."""
     if not path.is_file():
         raise InputError("%s: no such file" % path)
     with open(path, newline="") as f:
-        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+        reader = csv.DictReader(line for line in f if not line.startswith("#"))
+        rows = list(reader)
+        missing = [c for c in columns if c not in (reader.fieldnames or [])]
+    if missing:
+        raise InputError("%s: no column '%s'" % (path, missing[0]))
+    if not rows:
+        raise InputError("%s: no rows" % path)
+    return rows
+
+
+def number(text, path, line, what):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        raise InputError("%s:%d: %s is not a number: %r" % (path, line, what, text))
 
 
 def comparison(study_dir):
-    measured = {row["id"]: row for row in read_csv(MEASURED)}
+    measured = {row["id"]: row for row in read_csv(MEASURED, MEASURED_COLUMNS)}
     summary = study_dir / "study_specimens.csv"
-    rows = read_csv(summary)
+    rows = read_csv(summary, SUMMARY_COLUMNS)
+    seen = set()
     lines = ["| fabric | measured DC (%) | fabform DC (%), mean ± sd | fabform − measured | folds | CLO3D DC (%) | CLO3D − measured |",
              "|---|---:|---:|---:|---:|---:|---:|"]
     ours, theirs = [], []
-    for number, row in enumerate(rows, start=2):
-        match = FABRIC_OF_WARP.search(row.get("fabric.warp", ""))
+    for line, row in enumerate(rows, start=2):
+        match = FABRIC_OF_WARP.search(row.get("fabric.warp") or "")
         if not match or match.group(1) not in measured:
-            raise InputError("%s:%d: a case that is none of %s's fabrics" % (summary, number, MEASURED.name))
+            raise InputError("%s:%d: a case that is none of %s's fabrics" % (summary, line, MEASURED.name))
         fabric = measured[match.group(1)]
+        if fabric["id"] in seen:
+            raise InputError("%s:%d: %s a second time: one case a fabric" % (summary, line, fabric["id"]))
+        seen.add(fabric["id"])
         if not row.get("drape_coefficient mean"):
-            raise InputError("%s:%d: no converged specimen of %s" % (summary, number, fabric["id"]))
-        mean, sd = 100 * float(row["drape_coefficient mean"]), row["drape_coefficient sd"]
-        real, clo = 100 * float(fabric["measured_dc"]), 100 * float(fabric["clo3d_dc"])
+            raise InputError("%s:%d: no converged specimen of %s" % (summary, line, fabric["id"]))
+        mean = 100 * number(row["drape_coefficient mean"], summary, line, "drape_coefficient mean")
+        sd = row.get("drape_coefficient sd") or ""
+        real = 100 * number(fabric["measured_dc"], MEASURED, 0, "measured_dc")
+        clo = 100 * number(fabric["clo3d_dc"], MEASURED, 0, "clo3d_dc")
         ours.append(abs(mean - real))
         theirs.append(abs(clo - real))
         lines.append("| %s (%s, %s g/m²) | %.1f | %.1f ± %s (%s of %s) | %+.1f | %s | %.1f | %+.1f |" % (
             fabric["id"], fabric["composition"], fabric["areal_mass_g_m2"], real, mean,
-            "%.1f" % (100 * float(sd)) if sd else "-", row["converged"], row["specimens"], mean - real,
+            "%.1f" % (100 * number(sd, summary, line, "drape_coefficient sd")) if sd else "-", row["converged"],
+            row["specimens"], mean - real,
             row["drape.folds mean"], clo, clo - real))
     lines += ["", "Mean absolute error over %d fabrics: fabform %.1f points, CLO3D %.1f points (target for fabform: 5)"
               % (len(ours), sum(ours) / len(ours), sum(theirs) / len(theirs))]
@@ -68,10 +95,10 @@ def main(argv):
     study_dir = pathlib.Path(argv[0])
     try:
         text = comparison(study_dir)
-    except (InputError, KeyError, ValueError) as error:
+        (study_dir / "against_measured.md").write_text(text)
+    except (InputError, csv.Error, OSError) as error:
         print("drape_against_measured: %s" % error, file=sys.stderr)
         return 2
-    (study_dir / "against_measured.md").write_text(text)
     print(text, end="")
     return 0
 

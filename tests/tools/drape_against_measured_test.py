@@ -41,6 +41,22 @@ class DrapeAgainstMeasured(unittest.TestCase):
             self.assertIn("| -4.0 |", done.stdout)
             self.assertEqual((pathlib.Path(tmp) / "against_measured.md").read_text(), done.stdout)
 
+    def test_a_bad_table_is_one_line_naming_it_exit_two(self):
+        header = ("cases,fabric.warp,specimens,finished,converged,drape_coefficient mean,drape_coefficient sd,"
+                  "drape.folds mean\n")
+        row = "0-3,../materials/petrak2025/M1_warp.csv,4,4,4,0.3,0.01,9\n"
+        for text, said in ((header, "no rows"), ("cases,fabric.warp\n" + "0-3,x\n", "no column"),
+                           (header + row + row.replace("0-3", "4-7"), "a second time"),
+                           (header + "0-3,../materials/petrak2025/M1_warp.csv,4,4,4,abc,0.01,9\n", "not a number"),
+                           (header + "0-3,../materials/other/X_warp.csv,4,4,4,0.3,0.01,9\n", "none of")):
+            with tempfile.TemporaryDirectory() as tmp:
+                (pathlib.Path(tmp) / "study_specimens.csv").write_text(text)
+                done = subprocess.run(TOOL + [tmp], capture_output=True, text=True)
+                self.assertEqual(done.returncode, 2, text)
+                self.assertEqual(len(done.stderr.splitlines()), 1, done.stderr)
+                self.assertIn("study_specimens.csv", done.stderr)
+                self.assertIn(said, done.stderr)
+
     def test_a_folder_without_the_table_is_one_line_exit_two(self):
         with tempfile.TemporaryDirectory() as tmp:
             done = subprocess.run(TOOL + [tmp], capture_output=True, text=True)
