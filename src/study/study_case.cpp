@@ -14,26 +14,40 @@ std::string case_folder(const std::string& dir, int index) {
   return (fs::path(dir) / "cases" / name).string();
 }
 
-std::string case_termination(const std::string& folder) {
+namespace {
+
+// The folder's result.json, null when it has none or it is not a JSON object.
+nlohmann::json result_json(const std::string& folder) {
   std::ifstream in(fs::path(folder) / "result.json", std::ios::binary);
-  if (!in) return "";
-  const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
-  if (result.is_discarded() || !result.contains("termination") || !result["termination"].is_string()) return "";
+  if (!in) return nullptr;
+  nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
+  return result.is_object() ? result : nlohmann::json();
+}
+
+std::string termination_of(const nlohmann::json& result) {
+  if (result.is_null() || !result.contains("termination") || !result["termination"].is_string()) return "";
   return result["termination"].get<std::string>();
 }
+
+// A run that ended, whatever its ending; an interrupted or running one has not.
+bool ended(const std::string& termination) {
+  return !termination.empty() && termination != "interrupted" && termination != "running";
+}
+
+}  // namespace
+
+std::string case_termination(const std::string& folder) { return termination_of(result_json(folder)); }
 
 CaseState case_state(const std::string& folder) {
   const std::string termination = case_termination(folder);
   if (termination.empty()) return CaseState::missing;
-  if (termination != "interrupted" && termination != "running") return CaseState::finished;
+  if (ended(termination)) return CaseState::finished;
   return fs::exists(fs::path(folder) / "checkpoint.bin") ? CaseState::unfinished : CaseState::missing;
 }
 
 nlohmann::json finished_result(const std::string& folder) {
-  if (case_state(folder) != CaseState::finished) return nullptr;
-  std::ifstream in(fs::path(folder) / "result.json", std::ios::binary);
-  const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
-  return result.is_object() ? result : nlohmann::json();
+  nlohmann::json result = result_json(folder);  // read once: a study's tables read every case's
+  return ended(termination_of(result)) ? result : nlohmann::json();
 }
 
 std::vector<std::string> case_arguments(const StudySpec& spec, const std::string& dir, int index, int threads) {
