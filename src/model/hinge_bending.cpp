@@ -41,11 +41,15 @@ HingeStencil hinge_stencil(const Hinge& hinge) {
   return out;
 }
 
-double HingeBending::rigidity_of(const Model& model, const Hinge& hinge) const {
-  if (rigidity_warp_Nm_ == rigidity_weft_Nm_) return rigidity_warp_Nm_;
+double along_bending_direction(const Model& model, const Hinge& hinge, double value_warp, double value_weft) {
+  if (value_warp == value_weft) return value_warp;
   const Eigen::Vector2d e =
       (model.fabric.rest_position(hinge.edge[1]) - model.fabric.rest_position(hinge.edge[0])).head<2>();
-  return (rigidity_warp_Nm_ * e.y() * e.y() + rigidity_weft_Nm_ * e.x() * e.x()) / e.squaredNorm();
+  return (value_warp * e.y() * e.y() + value_weft * e.x() * e.x()) / e.squaredNorm();
+}
+
+double HingeBending::rigidity_of(const Model& model, const Hinge& hinge) const {
+  return along_bending_direction(model, hinge, rigidity_warp_Nm_, rigidity_weft_Nm_);
 }
 
 std::string HingeBending::describe(const Model& model) const {

@@ -16,6 +16,7 @@
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
+#include "fabform/model/hinge_friction.hpp"
 #include "fabform/model/pressure.hpp"
 #include "fabform/model/wind.hpp"
 #include "fabform/scene/fabric_plausibility.hpp"
@@ -280,6 +281,10 @@ Eigen::Vector2d add_bending(const Scene& scene, const std::optional<GivenValue>&
   if (scene.bending.hinges()) {
     const Eigen::Vector2d rigidity = hinge_rigidity(scene, mass);
     model->terms.push_back(std::make_shared<HingeBending>(rigidity.x(), rigidity.y()));
+    const BendingSpec& b = scene.bending;
+    if (b.hysteresis_N.maxCoeff() > 0.0)
+      model->terms.push_back(
+          std::make_shared<HingeFriction>(b.hysteresis_N.x(), b.hysteresis_N.y(), b.hysteresis_rounding_per_m));
     return rigidity;
   }
   const double k = scene.bending.stiffness_N_m;

@@ -209,6 +209,28 @@ void read_shear(TableReader r, Scene* scene) {
   r.reject_unknown({"material", "rigidity_N_m", "rigidity_gf_cm_deg"});
 }
 
+// KES-FB reports 2HB in gf·cm/cm (1 gf·cm/cm = 9.80665e-3 N·m/m); only hinges have friction.
+void read_bending_hysteresis(TableReader& r, BendingSpec* b) {
+  const bool in_gf = r.has("hysteresis_gf_cm_cm"), in_si = r.has("hysteresis_Nm_m");
+  if (in_gf && in_si) r.fail("hysteresis_gf_cm_cm", "give 2HB once: hysteresis_gf_cm_cm or hysteresis_Nm_m, not both");
+  if (!in_gf && !in_si) {
+    if (r.has("hysteresis_rounding_per_m"))
+      r.fail("hysteresis_rounding_per_m", "rounds the bending friction: give 2HB as well (hysteresis_gf_cm_cm)");
+    return;
+  }
+  const std::string key = in_gf ? "hysteresis_gf_cm_cm" : "hysteresis_Nm_m";
+  if (!b->hinges()) r.fail(key, "bending friction acts in hinges: give the rigidity (rigidity_uNm, rigidity_Nm or "
+                                "bending_length_cm), not stiffness_N_m");
+  const Eigen::Vector2d value = r.number_or_pair(key);
+  if (!(value.minCoeff() >= 0.0 && value.maxCoeff() > 0.0 && value.maxCoeff() <= (in_gf ? 1e3 : 10.0)))
+    r.fail(key, in_gf ? "must be in [0, 1000] gf·cm/cm, one of them positive" : "must be in [0, 10] N·m/m, one of them positive");
+  b->hysteresis_N = in_gf ? kNewtonsPerGramForce * value : value;
+  b->hysteresis_where = r.locate_key(key);
+  b->hysteresis_rounding_per_m = r.number("hysteresis_rounding_per_m", b->hysteresis_rounding_per_m);
+  if (!(b->hysteresis_rounding_per_m > 0.0 && b->hysteresis_rounding_per_m <= 1e4))
+    r.fail("hysteresis_rounding_per_m", "must be in (0, 1e4] 1/m");
+}
+
 // Hinges take the rigidity in N·m or µN·m, or the cantilever's bending length in cm, each a
 // number or [warp, weft]; seed 004's bend springs a stiffness. One of the four.
 void read_bending(TableReader r, Scene* scene) {
@@ -243,7 +265,10 @@ void read_bending(TableReader r, Scene* scene) {
     b.rigidity_Nm = micro ? 1e-6 * value : value;
     scene->fabric.hinges = true;
   }
-  r.reject_unknown(keys);
+  read_bending_hysteresis(r, &b);
+  std::vector<std::string> known = keys;
+  known.insert(known.end(), {"hysteresis_gf_cm_cm", "hysteresis_Nm_m", "hysteresis_rounding_per_m"});
+  r.reject_unknown(known);
 }
 
 void read_wind(TableReader r, Scene* scene) {

@@ -7,6 +7,7 @@
 
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
+#include "fabform/model/hinge_friction.hpp"
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
@@ -119,6 +120,30 @@ TEST_F(LabUnits, BendingLengthWithoutAMassIsRefusedAtItsKey) {
   const InputError e = error(scene("", "[bending]\nbending_length_cm = 2\n"));
   EXPECT_EQ(e.where().key, "bending.bending_length_cm") << e.what();
   EXPECT_NE(std::string(e.what()).find("fabric.areal_mass_g_m2"), std::string::npos) << e.what();
+}
+
+// KES-FB's 2HB in gf·cm/cm (1 gf·cm/cm = 9.80665e-3 N·m/m), per direction: the warp's across
+// sides along the weft, as the rigidity; the hinges bend against half of it.
+TEST_F(LabUnits, BendingHysteresisInGramForceCentimetresPerCentimetre) {
+  const Model model = build(scene("", "[bending]\nrigidity_uNm = 7\nhysteresis_gf_cm_cm = [0.08, 0.02]\n"));
+  const HingeFriction* friction = test::find_term<HingeFriction>(model);
+  ASSERT_NE(friction, nullptr);
+  for (const Hinge& h : model.fabric.hinges()) {
+    const Eigen::Vector3d e = model.fabric.rest_position(h.edge[1]) - model.fabric.rest_position(h.edge[0]);
+    const double two_hb = std::abs(e.x()) < 1e-12 ? 0.08 : 0.02;
+    EXPECT_NEAR(friction->friction_moment_of(model, h), 0.5 * two_hb * 9.80665e-3, 1e-15);
+  }
+  const Model si = build(scene("", "[bending]\nrigidity_uNm = 7\nhysteresis_Nm_m = 5e-4\n"));
+  EXPECT_NEAR(test::find_term<HingeFriction>(si)->friction_moment_of(si, si.fabric.hinges()[0]), 2.5e-4, 1e-18);
+  EXPECT_EQ(test::find_term<HingeFriction>(build(scene("", "[bending]\nrigidity_uNm = 7\n"))), nullptr);
+}
+
+// Friction acts in hinges: seed 004's bend springs have none, and the refusal names the key.
+TEST_F(LabUnits, BendingHysteresisNeedsHinges) {
+  const InputError e = error(scene("", "[bending]\nstiffness_N_m = 0.5\nhysteresis_gf_cm_cm = 0.05\n"));
+  EXPECT_EQ(e.where().key, "bending.hysteresis_gf_cm_cm") << e.what();
+  EXPECT_EQ(e.where().line, 10) << e.what();
+  EXPECT_NE(std::string(e.what()).find("rigidity_uNm"), std::string::npos) << e.what();
 }
 
 // A square cell sheared by a small γ stores the continuum's G·γ²/2 per area through its two

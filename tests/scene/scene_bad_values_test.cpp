@@ -100,7 +100,9 @@ std::vector<Section> drape_sections(Base base) {
                                      {"clamp", "[clamp]",
                                       {{"box_m", "[[0.0, 0.0], [0.05, 0.05]]"}, {"force_N", "10.0"}, {"friction", "0.3"}}}});
   else
-    sections.insert(sections.end(), {{"bending", "[bending]", {{"rigidity_Nm", "5e-5"}}},
+    sections.insert(sections.end(), {{"bending", "[bending]",
+                                      {{"rigidity_Nm", "5e-5"}, {"hysteresis_Nm_m", "5e-4"},
+                                       {"hysteresis_rounding_per_m", "10.0"}}},
                                      {"wind", "[wind]", {{"velocity_m_s", "[1.0, 0.0, -0.5]"}, {"coefficient_N_s_m3", "0.5"}}}});
   if (base == Base::circle)
     sections.push_back({"drape", "[drape]", {{"support", "\"dome\""}, {"clamp_radius_m", "0.02"}}});
@@ -170,7 +172,7 @@ SceneText base_scene(Base base) {
   if (base == Base::lift)
     drape = {{"shear", "[shear]", {{"rigidity_N_m", "40.0"}}}, {"bending", "[bending]", {{"bending_length_cm", "2.0"}}}};
   if (base == Base::wrap)
-    drape = {{"shear", "[shear]", {{"rigidity_gf_cm_deg", "0.8"}}}, {"bending", "[bending]", {{"rigidity_uNm", "7.0"}}}};
+    drape = {{"shear", "[shear]", {{"rigidity_gf_cm_deg", "0.8"}}}, {"bending", "[bending]", {{"rigidity_uNm", "7.0"}, {"hysteresis_gf_cm_cm", "0.05"}}}};
   scene.sections.insert(gravity + 1, drape.begin(), drape.end());
   // Springs wrap the dome's facets' edges, but not in dynamic (the arc's solver), which refuses them.
   if (base != Base::arc) scene.sections[2].entries.push_back({"wrap_edges_deg", "30.0"});
@@ -384,6 +386,16 @@ const std::vector<KeyRow>& key_table() {
       {"bending.bending_length_cm",     T::number,    lift, _,   R,  R,   R,   _,    "",
        {{"cap", "1000.0", A, kSame}, {"beyond_cap", "1001.0", R, kSame}, {"missing", kRemove, R, "bending"},
         {"warp_and_weft", "[2.5, 1.8]", A, kSame}, {"and_rigidity", "2.0\nrigidity_uNm = 7.0", R, "bending"}}},
+      // Bending friction, KES's 2HB: in gf·cm/cm on the wrap's hinges, in N·m/m on the arc's.
+      {"bending.hysteresis_gf_cm_cm",   T::number,    wrap, A,   R,  R,   R,   _,    "",
+       {{"cap", "1000.0", A, kSame}, {"beyond_cap", "1001.0", R, kSame}, {"warp_and_weft", "[0.05, 0.0]", A, kSame},
+        {"both_zero", "[0.0, 0.0]", R, kSame}, {"one_direction_negative", "[0.05, -0.01]", R, kSame},
+        {"and_N", "0.05\nhysteresis_Nm_m = 5e-4", R, kSame}}},
+      {"bending.hysteresis_Nm_m",       T::number,    arc,  _,   R,  R,   R,   _,    "",
+       {{"cap", "10.0", A, kSame}, {"beyond_cap", "10.1", R, kSame},
+        {"missing", kRemove, R, "bending.hysteresis_rounding_per_m"}}},
+      {"bending.hysteresis_rounding_per_m", T::number, arc, A,   R,  R,   R,   _,    "",
+       {{"cap", "1e4", A, kSame}, {"beyond_cap", "1.1e4", R, kSame}}},
       {"wind",                           T::table,     arc,  A,   _,  _,   _,   _,    "", {}},
       {"wind.velocity_m_s",              T::vec3,      arc,  R,   A,  R,   R,   _,    "",
        {{"along_x", "[5.0, 0.0, 0.0]", A, kSame}, {"speed_of_sound", "[0.0, 0.0, 1000.0]", A, kSame},

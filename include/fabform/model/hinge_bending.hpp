@@ -39,6 +39,11 @@ struct HingeStencil {
 };
 HingeStencil hinge_stencil(const Hinge& hinge);
 
+/// A property measured along warp and weft as the hinge bends with it: the warp's for an edge
+/// along the weft, between them value_warp·cos²ψ + value_weft·sin²ψ, ψ the bending direction's
+/// angle from the warp (see HingeBending).
+double along_bending_direction(const Model& model, const Hinge& hinge, double value_warp, double value_weft);
+
 /// The fabric's hinges as a term of the model, with its flexural rigidity B (N·m) along the warp
 /// and along the weft (a strip cut along the warp and bent along its length resists with the
 /// warp's). A hinge bends the fabric across its edge, so an edge along the weft takes the warp's

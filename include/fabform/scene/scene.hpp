@@ -79,6 +79,11 @@ struct BendingSpec {
   // Cantilever bending lengths c (m), BS 3356 / ASTM D1388: B = m·g₀·c³ with the fabric's areal
   // mass m, so the model builder, which knows m, turns them into rigidities. 0: not given.
   Eigen::Vector2d bending_length_m = Eigen::Vector2d::Zero();
+  // KES-FB's bending hysteresis 2HB (moment per width, N·m/m) along warp and weft, the hinges'
+  // friction (hinge_friction.hpp); 0: none. The friction moment rounds in over this curvature.
+  Eigen::Vector2d hysteresis_N = Eigen::Vector2d::Zero();
+  double hysteresis_rounding_per_m = 10.0;
+  SourceLocation hysteresis_where;
   bool hinges() const { return rigidity_Nm.maxCoeff() > 0.0 || bending_length_m.maxCoeff() > 0.0; }
   SourceLocation where;
   SourceLocation value_where;  // the key that gave the rigidity or bending length

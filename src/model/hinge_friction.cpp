@@ -1,0 +1,121 @@
+#include "fabform/model/hinge_friction.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <stdexcept>
+
+#include "fabform/model/hinge_bending.hpp"
+#include "fabform/model/model.hpp"
+
+namespace fabform {
+namespace {
+
+double side_length(const Model& model, const Hinge& hinge) {
+  return (model.fabric.rest_position(hinge.edge[1]) - model.fabric.rest_position(hinge.edge[0])).norm();
+}
+
+// |k| rounded below ε (Huber): k²/(2ε) there, |k| − ε/2 past it; continuous with its slope.
+double rounded_norm(double norm, double rounding) {
+  return norm < rounding ? 0.5 * norm * norm / rounding : norm - 0.5 * rounding;
+}
+
+// ρ'(|k|)/|k|: the gradient of ρ(|k|) with respect to k is this times k.
+double rounded_slope_over_norm(double norm, double rounding) { return norm < rounding ? 1.0 / rounding : 1.0 / norm; }
+
+std::size_t stencil_index(const HingeStencil& stencil, int node) {
+  for (int k = 0; k < stencil.count; ++k)
+    if (stencil.node[static_cast<std::size_t>(k)] == node) return static_cast<std::size_t>(k);
+  throw std::logic_error("hinge friction: a hinge listed at a node does not reach it");
+}
+
+}  // namespace
+
+HingeFriction::HingeFriction(double hysteresis_warp_N, double hysteresis_weft_N, double rounding_per_m)
+    : hysteresis_warp_N_(hysteresis_warp_N), hysteresis_weft_N_(hysteresis_weft_N), rounding_per_m_(rounding_per_m) {
+  if (!(hysteresis_warp_N >= 0.0 && hysteresis_weft_N >= 0.0 && rounding_per_m > 0.0))
+    throw std::invalid_argument("hinge friction: 2HB must be non-negative and the rounding curvature positive");
+}
+
+double HingeFriction::friction_moment_of(const Model& model, const Hinge& hinge) const {
+  return 0.5 * along_bending_direction(model, hinge, hysteresis_warp_N_, hysteresis_weft_N_);
+}
+
+double HingeFriction::rounding_angle_of(const Model& model, const Hinge& hinge) const {
+  return rounding_per_m_ * side_length(model, hinge) / (2.0 * hinge.shape_factor);
+}
+
+double HingeFriction::hinge_energy(const Model& model, const Hinge& hinge, const Positions& x, int moved,
+                                   const Eigen::Vector3d& at) const {
+  const double norm = bend_vector(hinge, x, moved, at).norm();
+  return friction_moment_of(model, hinge) * side_length(model, hinge) *
+         rounded_norm(norm, rounding_angle_of(model, hinge));
+}
+
+std::string HingeFriction::describe(const Model& model) const {
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "bending friction: hinges across %zu face sides bend against half the measured hysteresis 2HB "
+                "(loading branch; 2HB %.6g N·m/m along the warp, %.6g N·m/m along the weft, rounded over %.6g 1/m)",
+                model.fabric.hinges().size(), hysteresis_warp_N_, hysteresis_weft_N_, rounding_per_m_);
+  return text;
+}
+
+double HingeFriction::energy(const Model& model, const Positions& x) const {
+  double energy = 0.0;
+  for (const Hinge& h : model.fabric.hinges()) energy += hinge_energy(model, h, x, -1, Eigen::Vector3d::Zero());
+  return energy;
+}
+
+Eigen::Vector3d HingeFriction::force_at(const Model& model, const Positions& x, int node,
+                                        const Eigen::Vector3d& at) const {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  for (const int i : model.fabric.hinges_at(node)) {
+    const Hinge& h = model.fabric.hinges()[static_cast<std::size_t>(i)];
+    const HingeStencil stencil = hinge_stencil(h);
+    const Eigen::Vector3d k = bend_vector(h, x, node, at);
+    const double slope = rounded_slope_over_norm(k.norm(), rounding_angle_of(model, h));
+    force -= friction_moment_of(model, h) * side_length(model, h) * slope *
+             stencil.weight[stencil_index(stencil, node)] * k;
+  }
+  return force;
+}
+
+double HingeFriction::node_energy_change(const Model& model, const Positions& x, int node,
+                                         const Eigen::Vector3d& at) const {
+  double change = 0.0;
+  for (const int i : model.fabric.hinges_at(node)) {
+    const Hinge& h = model.fabric.hinges()[static_cast<std::size_t>(i)];
+    change += hinge_energy(model, h, x, node, at) - hinge_energy(model, h, x, node, x[static_cast<std::size_t>(node)]);
+  }
+  return change;
+}
+
+void HingeFriction::add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const {
+  const std::vector<Hinge>& hinges = model.fabric.hinges();
+  sink.add_each(hinges.size(), [&](std::size_t i, StiffnessSink& part) {
+    const Hinge& h = hinges[i];
+    const HingeStencil stencil = hinge_stencil(h);
+    const Eigen::Vector3d k = bend_vector(h, x, -1, Eigen::Vector3d::Zero());
+    const double norm = k.norm(), rounding = rounding_angle_of(model, h);
+    Eigen::Matrix3d d = Eigen::Matrix3d::Identity() * rounded_slope_over_norm(norm, rounding);
+    if (norm >= rounding) d -= k * k.transpose() / (norm * norm * norm);
+    const double scale = friction_moment_of(model, h) * side_length(model, h);
+    for (std::size_t r = 0; r < static_cast<std::size_t>(stencil.count); ++r)
+      for (std::size_t c = 0; c <= r; ++c) part.add(stencil.node[r], stencil.node[c], scale * stencil.weight[r] * stencil.weight[c] * d);
+  });
+}
+
+void HingeFriction::bound_stiffness(const Model& model, StiffnessBound& bound) const {
+  for (const Hinge& h : model.fabric.hinges()) {
+    const HingeStencil stencil = hinge_stencil(h);
+    double sum = 0.0;
+    for (int k = 0; k < stencil.count; ++k) sum += std::abs(stencil.weight[static_cast<std::size_t>(k)]);
+    const double scale = 0.5 * friction_moment_of(model, h) * side_length(model, h) / rounding_angle_of(model, h);
+    for (int k = 0; k < stencil.count; ++k)
+      bound.per_node[static_cast<std::size_t>(stencil.node[static_cast<std::size_t>(k)])] +=
+          scale * std::abs(stencil.weight[static_cast<std::size_t>(k)]) * sum;
+  }
+}
+
+}  // namespace fabform
