@@ -111,7 +111,10 @@ void HingeFriction::bound_stiffness(const Model& model, StiffnessBound& bound) c
     const HingeStencil stencil = hinge_stencil(h);
     double sum = 0.0;
     for (int k = 0; k < stencil.count; ++k) sum += std::abs(stencil.weight[static_cast<std::size_t>(k)]);
-    const double scale = 0.5 * friction_moment_of(model, h) * side_length(model, h) / rounding_angle_of(model, h);
+    // D's rows sum to at most 1/ε in absolute value inside the rounding, and past it those of the
+    // projection (I − k̂·k̂ᵀ)/|k| to at most (1 + √3)/2 / |k|, |k| ≥ ε.
+    const double row_sum = 0.5 * (1.0 + std::sqrt(3.0)) / rounding_angle_of(model, h);
+    const double scale = 0.5 * friction_moment_of(model, h) * side_length(model, h) * row_sum;
     for (int k = 0; k < stencil.count; ++k)
       bound.per_node[static_cast<std::size_t>(stencil.node[static_cast<std::size_t>(k)])] +=
           scale * std::abs(stencil.weight[static_cast<std::size_t>(k)]) * sum;

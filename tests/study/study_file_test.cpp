@@ -30,7 +30,8 @@ InputError error_of(const std::string& text) {
 }
 
 TEST(StudyFile, ShippedStudiesReadAndFitTheirScenes) {
-  for (const char* name : {"dome_tolerance_solver", "cup_friction_depth", "cusick_fabrics", "cusick_measured"}) {
+  for (const char* name : {"dome_tolerance_solver", "cup_friction_depth", "cusick_fabrics", "cusick_measured",
+                           "cusick_bending_friction"}) {
     const StudySpec spec = load_study(test::source_path(std::string("studies/") + name + ".toml"));
     EXPECT_EQ(spec.name, name);
     EXPECT_FALSE(spec.cases.empty());

@@ -41,7 +41,8 @@ class HingeFriction final : public Term {
   /// HB·l·(c_a·c_b)·D over each pair of the hinge's nodes, D = I/ε inside the rounding and
   /// (I − k̂·k̂ᵀ)/|k| past it: exact, positive semi-definite.
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
-  /// Per node, half its row sum of the stiffest D, I/ε.
+  /// Per node, half a bound of its row sum of |stiffness| at any state: D's rows sum to at most
+  /// (1 + √3)/(2·ε) in absolute value.
   void bound_stiffness(const Model& model, StiffnessBound& bound) const override;
   bool resists_bending() const override { return true; }
 

@@ -67,6 +67,10 @@ struct ShearSpec {
   SourceLocation material_where;
   double rigidity_N_m = 0.0;  // G, shear force per width per radian (N/m); 0: from the table
   SourceLocation rigidity_where;
+  // KES-FB1's shear hysteresis 2HG (force per width, N/m) beside G: the diagonals' friction;
+  // 0: none. The friction force rounds in over this shear angle.
+  double hysteresis_N_m = 0.0;
+  double hysteresis_rounding_rad = 0.1 * 3.14159265358979323846 / 180.0;
 };
 
 // [bending]: seed 004's bend springs (stiffness_N_m) or hinges with the fabric's flexural
@@ -83,7 +87,6 @@ struct BendingSpec {
   // friction (hinge_friction.hpp); 0: none. The friction moment rounds in over this curvature.
   Eigen::Vector2d hysteresis_N = Eigen::Vector2d::Zero();
   double hysteresis_rounding_per_m = 10.0;
-  SourceLocation hysteresis_where;
   bool hinges() const { return rigidity_Nm.maxCoeff() > 0.0 || bending_length_m.maxCoeff() > 0.0; }
   SourceLocation where;
   SourceLocation value_where;  // the key that gave the rigidity or bending length
