@@ -15,7 +15,8 @@ What it writes (from the repository root):
       mass (g/m^2), flexural rigidity per direction (bending / 1000 uN.m: 1 g.mm^2/s^2 = 1e-9 N.m)
       and shear rigidity G (shear / 1000 N/m), four specimens each
 
-Usage: /usr/bin/python3 tools/derive_petrak2025.py [--check]   (--check: exit 1 if a file is stale)
+Usage: /usr/bin/python3 tools/derive_petrak2025.py [--check]   (--check: exit 1 if a file is stale;
+exit 2 on a usage error or a malformed fabrics.csv, one line naming its line, nothing written)
 Standard library only.
 """
 import csv
@@ -27,9 +28,35 @@ DATA = ROOT / "materials" / "petrak2025"
 STUDY = ROOT / "studies" / "cusick_measured.toml"
 
 
+NUMBERS = ("areal_mass_g_m2", "stretch_warp_g_s2", "stretch_weft_g_s2", "shear_g_s2", "bending_warp_g_mm2_s2",
+           "bending_weft_g_mm2_s2")
+
+
+class Malformed(Exception):
+    """fabrics.csv cannot be read: the message names its line and what is wrong."""
+
+
 def fabrics():
-    with open(DATA / "fabrics.csv", newline="") as f:
-        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+    path = DATA / "fabrics.csv"
+    with open(path, newline="") as f:
+        numbered = [(n, line) for n, line in enumerate(f, 1) if not line.startswith("#")]
+    reader = csv.DictReader(line for _, line in numbered)
+    missing = [c for c in ("id", "composition", "weave") + NUMBERS if c not in (reader.fieldnames or [])]
+    if missing:
+        raise Malformed("%s: no column %s" % (path, ", ".join(missing)))
+    rows = []
+    for (n, _), row in zip(numbered[1:], reader):
+        for column in NUMBERS:
+            try:
+                value = float(row[column] or "")
+            except ValueError:
+                raise Malformed("%s line %d: %s = %r is not a number" % (path, n, column, row[column]))
+            if not value > 0.0:
+                raise Malformed("%s line %d: %s = %r must be positive" % (path, n, column, row[column]))
+        rows.append(row)
+    if not rows:
+        raise Malformed("%s: no fabric" % path)
+    return rows
 
 
 def table(fabric, direction):
@@ -88,9 +115,15 @@ def outputs():
 def main(argv):
     check = argv == ["--check"]
     if argv and not check:
-        sys.exit("usage: derive_petrak2025.py [--check]")
+        print("usage: derive_petrak2025.py [--check]", file=sys.stderr)
+        return 2
+    try:
+        files = outputs()
+    except Malformed as error:
+        print("derive_petrak2025: %s" % error, file=sys.stderr)
+        return 2
     stale = []
-    for path, text in outputs().items():
+    for path, text in files.items():
         if check:
             if not path.is_file() or path.read_text() != text:
                 stale.append(str(path.relative_to(ROOT)))

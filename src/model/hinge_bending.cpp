@@ -1,6 +1,6 @@
 #include "fabform/model/hinge_bending.hpp"
 
-#include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -41,10 +41,19 @@ HingeStencil hinge_stencil(const Hinge& hinge) {
   return out;
 }
 
+std::size_t stencil_index(const HingeStencil& stencil, int node) {
+  for (int k = 0; k < stencil.count; ++k)
+    if (stencil.node[static_cast<std::size_t>(k)] == node) return static_cast<std::size_t>(k);
+  throw std::logic_error("a hinge listed at a node does not reach it");
+}
+
+Eigen::Vector3d flat_side(const Model& model, const Hinge& hinge) {
+  return model.fabric.rest_position(hinge.edge[1]) - model.fabric.rest_position(hinge.edge[0]);
+}
+
 double along_bending_direction(const Model& model, const Hinge& hinge, double value_warp, double value_weft) {
   if (value_warp == value_weft) return value_warp;
-  const Eigen::Vector2d e =
-      (model.fabric.rest_position(hinge.edge[1]) - model.fabric.rest_position(hinge.edge[0])).head<2>();
+  const Eigen::Vector2d e = flat_side(model, hinge).head<2>();
   return (value_warp * e.y() * e.y() + value_weft * e.x() * e.x()) / e.squaredNorm();
 }
 
@@ -78,9 +87,8 @@ Eigen::Vector3d HingeBending::force_at(const Model& model, const Positions& x, i
   for (const int i : model.fabric.hinges_at(node)) {
     const Hinge& h = model.fabric.hinges()[static_cast<std::size_t>(i)];
     const HingeStencil stencil = hinge_stencil(h);
-    const auto k = static_cast<std::size_t>(
-        std::find(stencil.node.begin(), stencil.node.begin() + stencil.count, node) - stencil.node.begin());
-    force -= 2.0 * rigidity_of(model, h) * h.shape_factor * stencil.weight[k] * bend_vector(h, x, node, at);
+    force -= 2.0 * rigidity_of(model, h) * h.shape_factor * stencil.weight[stencil_index(stencil, node)] *
+             bend_vector(h, x, node, at);
   }
   return force;
 }

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/model.hpp"
@@ -11,9 +12,7 @@
 namespace fabform {
 namespace {
 
-double side_length(const Model& model, const Hinge& hinge) {
-  return (model.fabric.rest_position(hinge.edge[1]) - model.fabric.rest_position(hinge.edge[0])).norm();
-}
+double side_length(const Model& model, const Hinge& hinge) { return flat_side(model, hinge).norm(); }
 
 // |k| rounded below ε (Huber): k²/(2ε) there, |k| − ε/2 past it; continuous with its slope.
 double rounded_norm(double norm, double rounding) {
@@ -22,12 +21,6 @@ double rounded_norm(double norm, double rounding) {
 
 // ρ'(|k|)/|k|: the gradient of ρ(|k|) with respect to k is this times k.
 double rounded_slope_over_norm(double norm, double rounding) { return norm < rounding ? 1.0 / rounding : 1.0 / norm; }
-
-std::size_t stencil_index(const HingeStencil& stencil, int node) {
-  for (int k = 0; k < stencil.count; ++k)
-    if (stencil.node[static_cast<std::size_t>(k)] == node) return static_cast<std::size_t>(k);
-  throw std::logic_error("hinge friction: a hinge listed at a node does not reach it");
-}
 
 }  // namespace
 
@@ -45,7 +38,7 @@ double HingeFriction::rounding_angle_of(const Model& model, const Hinge& hinge) 
   return rounding_per_m_ * side_length(model, hinge) / (2.0 * hinge.shape_factor);
 }
 
-double HingeFriction::hinge_energy(const Model& model, const Hinge& hinge, const Positions& x, int moved,
+double HingeFriction::friction_energy(const Model& model, const Hinge& hinge, const Positions& x, int moved,
                                    const Eigen::Vector3d& at) const {
   const double norm = bend_vector(hinge, x, moved, at).norm();
   return friction_moment_of(model, hinge) * side_length(model, hinge) *
@@ -63,7 +56,7 @@ std::string HingeFriction::describe(const Model& model) const {
 
 double HingeFriction::energy(const Model& model, const Positions& x) const {
   double energy = 0.0;
-  for (const Hinge& h : model.fabric.hinges()) energy += hinge_energy(model, h, x, -1, Eigen::Vector3d::Zero());
+  for (const Hinge& h : model.fabric.hinges()) energy += friction_energy(model, h, x, -1, Eigen::Vector3d::Zero());
   return energy;
 }
 
@@ -86,7 +79,8 @@ double HingeFriction::node_energy_change(const Model& model, const Positions& x,
   double change = 0.0;
   for (const int i : model.fabric.hinges_at(node)) {
     const Hinge& h = model.fabric.hinges()[static_cast<std::size_t>(i)];
-    change += hinge_energy(model, h, x, node, at) - hinge_energy(model, h, x, node, x[static_cast<std::size_t>(node)]);
+    change += friction_energy(model, h, x, node, at) -
+              friction_energy(model, h, x, node, x[static_cast<std::size_t>(node)]);
   }
   return change;
 }
@@ -119,6 +113,12 @@ void HingeFriction::bound_stiffness(const Model& model, StiffnessBound& bound) c
       bound.per_node[static_cast<std::size_t>(stencil.node[static_cast<std::size_t>(k)])] +=
           scale * std::abs(stencil.weight[static_cast<std::size_t>(k)]) * sum;
   }
+}
+
+std::string HingeFriction::refusal(const std::string& solver) const {
+  if (solver != "dynamic") return "";
+  return "bending friction is modelled on its loading branch alone, from which dynamic's fabric would spring back: "
+         "use newton or relax";
 }
 
 }  // namespace fabform

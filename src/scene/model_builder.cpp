@@ -248,24 +248,12 @@ void check_clear_start(const Scene& scene, const Model& model) {
 // the fabric has them, so the model has their term. From a measured shear rigidity G they are
 // linear both ways with k = 2·G: a cell sheared by γ stretches one diagonal by γ/2 and shortens
 // the other as much, and the two, each standing for the cell's area A, store
-// 2·A·k·(γ/2)²/2 = A·G·γ²/2, the continuum's shear energy. KES-FB1's shear hysteresis 2HG adds
-// the friction of its loop's loading branch, T = G·γ + HG·sign γ per width with HG = 2HG / 2:
-// each diagonal then carries HG more, both ways (two diagonals at γ/2 each do the work A·HG·|γ|),
-// reached over a steep segment out to the rounding's shear angle γ₀ (strain γ₀/2).
+// 2·A·k·(γ/2)²/2 = A·G·γ²/2, the continuum's shear energy.
 void add_shear(const Scene& scene, Model* model) {
   if (!scene.shear.on) return;
   if (scene.shear.rigidity_N_m > 0.0) {
     const double k = 2.0 * scene.shear.rigidity_N_m;
-    const double friction = 0.5 * scene.shear.hysteresis_N_m, corner = 0.5 * scene.shear.hysteresis_rounding_rad;
-    if (friction <= 0.0) {
-      model->shear = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "shear rigidity");
-      return;
-    }
-    char name[96];
-    std::snprintf(name, sizeof name, "shear rigidity with friction 2HG = %.6g N/m", scene.shear.hysteresis_N_m);
-    model->shear = TensionTable(
-        {{-1.0, -k - friction}, {-corner, -k * corner - friction}, {corner, k * corner + friction}, {1.0, k + friction}},
-        name);
+    model->shear = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "shear rigidity");
     return;
   }
   model->shear = read_material(scene, scene.shear.material_path, scene.shear.material_where).table;

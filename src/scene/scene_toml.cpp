@@ -187,29 +187,6 @@ void read_fabric(TableReader& r, Scene* scene) {
 constexpr double kNewtonsPerGramForce = kStandardGravity_m_s2 * 1e-3;  // a gram-force, by definition
 constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
 
-// KES-FB1 reports 2HG in gf/cm (× 0.980665 = N/m); friction goes with a measured G, whose
-// diagonals are linear both ways, not with a bias table.
-void read_shear_hysteresis(TableReader& r, ShearSpec* s) {
-  const bool in_gf = r.has("hysteresis_gf_cm"), in_si = r.has("hysteresis_N_m");
-  if (in_gf && in_si) r.fail("hysteresis_gf_cm", "give 2HG once: hysteresis_gf_cm or hysteresis_N_m, not both");
-  if (!in_gf && !in_si) {
-    if (r.has("hysteresis_rounding_deg"))
-      r.fail("hysteresis_rounding_deg", "rounds the shear friction: give 2HG as well (hysteresis_gf_cm)");
-    return;
-  }
-  const std::string key = in_gf ? "hysteresis_gf_cm" : "hysteresis_N_m";
-  if (!(s->rigidity_N_m > 0.0))
-    r.fail(key, "shear friction goes with a measured shear rigidity: give rigidity_N_m or rigidity_gf_cm_deg, not a "
-                "material table");
-  const double value = r.number(key, 0.0, true);
-  if (!(value > 0.0 && value <= (in_gf ? 1e3 : 1e3 * kNewtonsPerGramForce / 0.01)))
-    r.fail(key, in_gf ? "must be in (0, 1000] gf/cm" : "must be in (0, 980.665] N/m");
-  s->hysteresis_N_m = in_gf ? value * kNewtonsPerGramForce / 0.01 : value;
-  const double rounding_deg = r.number("hysteresis_rounding_deg", s->hysteresis_rounding_rad / kRadiansPerDegree);
-  if (!(rounding_deg > 0.0 && rounding_deg <= 10.0)) r.fail("hysteresis_rounding_deg", "must be in (0, 10] degrees");
-  s->hysteresis_rounding_rad = rounding_deg * kRadiansPerDegree;
-}
-
 // The diagonal springs follow a bias table (material) or a measured shear rigidity; one of them.
 void read_shear(TableReader r, Scene* scene) {
   ShearSpec& s = scene->shear;
@@ -229,9 +206,7 @@ void read_shear(TableReader r, Scene* scene) {
     s.rigidity_where = r.locate_key(key);
   }
   scene->fabric.shear_springs = true;
-  read_shear_hysteresis(r, &s);
-  r.reject_unknown({"material", "rigidity_N_m", "rigidity_gf_cm_deg", "hysteresis_gf_cm", "hysteresis_N_m",
-                    "hysteresis_rounding_deg"});
+  r.reject_unknown({"material", "rigidity_N_m", "rigidity_gf_cm_deg"});
 }
 
 // KES-FB reports 2HB in gf·cm/cm (1 gf·cm/cm = 9.80665e-3 N·m/m); only hinges have friction.
@@ -247,12 +222,14 @@ void read_bending_hysteresis(TableReader& r, BendingSpec* b) {
   if (!b->hinges()) r.fail(key, "bending friction acts in hinges: give the rigidity (rigidity_uNm, rigidity_Nm or "
                                 "bending_length_cm), not stiffness_N_m");
   const Eigen::Vector2d value = r.number_or_pair(key);
-  if (!(value.minCoeff() >= 0.0 && value.maxCoeff() > 0.0 && value.maxCoeff() <= (in_gf ? 1e3 : 10.0)))
-    r.fail(key, in_gf ? "must be in [0, 1000] gf·cm/cm, one of them positive" : "must be in [0, 10] N·m/m, one of them positive");
+  if (!(value.minCoeff() >= 0.0 && value.maxCoeff() > 0.0 && value.maxCoeff() <= (in_gf ? 1e3 : 1e3 * kNewtonsPerGramForce)))
+    r.fail(key, in_gf ? "must be in [0, 1000] gf·cm/cm, one of them positive"
+                      : "must be in [0, 9.80665] N·m/m, one of them positive");
   b->hysteresis_N = in_gf ? kNewtonsPerGramForce * value : value;
   b->hysteresis_rounding_per_m = r.number("hysteresis_rounding_per_m", b->hysteresis_rounding_per_m);
-  if (!(b->hysteresis_rounding_per_m > 0.0 && b->hysteresis_rounding_per_m <= 1e4))
-    r.fail("hysteresis_rounding_per_m", "must be in (0, 1e4] 1/m");
+  // Below 1e-3 1/m (a bend of radius 1 km) the stick would be a rigidity a million times 2HB's.
+  if (!(b->hysteresis_rounding_per_m >= 1e-3 && b->hysteresis_rounding_per_m <= 1e4))
+    r.fail("hysteresis_rounding_per_m", "must be in [0.001, 1e4] 1/m");
 }
 
 // Hinges take the rigidity in N·m or µN·m, or the cantilever's bending length in cm, each a
@@ -738,6 +715,11 @@ Scene read_scene(const toml::table& root, const std::string& path,
                             scene.solver.name);
   refuse_friction_in_relax(scene, solver);
   refuse_wrapped_edges_in_dynamic(scene, solver);
+  if (scene.bending.hysteresis_N.maxCoeff() > 0.0 && scene.solver.name == "dynamic")
+    solver.fail("name", "the scene has bending friction (bending.hysteresis_*, line " +
+                            std::to_string(scene.bending.where.line) +
+                            "), modelled on its loading branch alone, from which dynamic's fabric would spring back: "
+                            "use newton or relax");
   if (scene.clamp.on && scene.solver.name != "newton")
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only newton models, not " + scene.solver.name);

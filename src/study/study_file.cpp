@@ -259,7 +259,8 @@ StudySpec parse_study(std::string_view text, const std::string& path) {
   if (set && !set->is_table()) study.fail("set", "must be a table of scene values: [study.set]");
   for (const auto& [key, node] : flattened(set)) spec.fixed.push_back(study_value(path, key, *node));
   const long long specimens_given = study.integer("specimens", 1);
-  if (specimens_given < 1 || specimens_given > 1000) study.fail("specimens", "must be between 1 and 1000");
+  if (specimens_given < 1 || specimens_given > kMaxSpecimens)
+    study.fail("specimens", "must be between 1 and " + std::to_string(kMaxSpecimens));
   spec.specimens = static_cast<int>(specimens_given);
   const toml::node* specimens = root["study"]["specimens"].node();
   spec.specimens_where = specimens ? at(path, *specimens, "study.specimens") : SourceLocation{path, 0, "study.specimens"};

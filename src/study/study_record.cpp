@@ -25,14 +25,22 @@ std::vector<StudyValue> values_of(const nlohmann::json& list, const std::string&
   return values;
 }
 
-// A study with specimens groups its cases in runs of `specimens`, the seed varied last.
+// A study with specimens groups its cases in runs of `specimens`, the seed varied last and
+// counting 1 … specimens within each run, as the study file wrote them.
 void check_specimens(const StudySpec& spec) {
   if (spec.specimens == 1) return;
-  if (spec.specimens < 1 || spec.cases.size() % static_cast<std::size_t>(spec.specimens) != 0 || spec.varied.empty() ||
-      spec.varied.back() != kSpecimenSeedKey)
-    throw InputError(spec.specimens_where, "malformed study record: " + std::to_string(spec.specimens) +
-                                               " specimens do not group its " + std::to_string(spec.cases.size()) +
-                                               " cases, or initial.seed is not its last varied key");
+  const auto fail = [&](const std::string& why) {
+    throw InputError(spec.specimens_where, "malformed study record: " + why);
+  };
+  if (spec.specimens < 1 || spec.specimens > kMaxSpecimens || spec.cases.size() % static_cast<std::size_t>(spec.specimens) != 0 ||
+      spec.varied.empty() || spec.varied.back() != kSpecimenSeedKey)
+    fail(std::to_string(spec.specimens) + " specimens do not group its " + std::to_string(spec.cases.size()) +
+         " cases, or initial.seed is not its last varied key");
+  for (std::size_t k = 0; k < spec.cases.size(); ++k) {
+    const std::string seed = std::to_string(1 + k % static_cast<std::size_t>(spec.specimens));
+    if (spec.cases[k].values.empty() || spec.cases[k].values.back().toml != seed)
+      fail("case " + std::to_string(k) + " should be specimen " + seed + " (initial.seed = " + seed + ")");
+  }
 }
 
 }  // namespace

@@ -146,6 +146,15 @@ TEST_F(LabUnits, BendingHysteresisNeedsHinges) {
   EXPECT_NE(std::string(e.what()).find("rigidity_uNm"), std::string::npos) << e.what();
 }
 
+// Dynamic's fabric would swing back along the loading branch as if it were elastic: refused at the
+// solver's name.
+TEST_F(LabUnits, BendingHysteresisIsRefusedInDynamic) {
+  const InputError e = error(scene("", "[bending]\nrigidity_uNm = 7\nhysteresis_gf_cm_cm = 0.05\n"
+                                       "[solver]\nname = \"dynamic\"\n"));
+  EXPECT_EQ(e.where().key, "solver.name") << e.what();
+  EXPECT_NE(std::string(e.what()).find("loading branch"), std::string::npos) << e.what();
+}
+
 // A square cell sheared by a small γ stores the continuum's G·γ²/2 per area through its two
 // diagonals; the warp and weft springs keep their length to second order and add only O(γ⁴).
 double shear_energy_J(const Model& model, double gamma) {
@@ -163,27 +172,6 @@ TEST_F(LabUnits, ShearRigidityStoresTheContinuumShearEnergy) {
     EXPECT_NEAR(shear_energy_J(model, gamma), 0.5 * g * gamma * gamma * area, 1e-3 * 0.5 * g * gamma * gamma * area)
         << keys;
   }
-}
-
-// KES-FB1's 2HG (gf/cm: × 0.980665 = N/m) adds the loading branch's friction HG = 2HG / 2 to G:
-// sheared by γ past the rounding γ₀ (0.1°), a cell stores G·γ²/2 + HG·(γ − γ₀/2) per area, the
-// work of T = G·γ + HG per width less the rounded corner's.
-TEST_F(LabUnits, ShearHysteresisAddsTheFrictionsWork) {
-  const double area = 0.1 * 0.05, gamma = 0.02, g = 40.0, rounding = 0.1 * M_PI / 180.0;
-  const Model model = build(scene("", "[shear]\nrigidity_N_m = 40\nhysteresis_gf_cm = 1.5\n"));
-  const double hg = 0.5 * 1.5 * 0.980665;
-  const double expected = (0.5 * g * gamma * gamma + hg * (gamma - 0.5 * rounding)) * area;
-  EXPECT_NEAR(shear_energy_J(model, gamma), expected, 2e-3 * expected);
-  const Model si = build(scene("", "[shear]\nrigidity_N_m = 40\nhysteresis_N_m = 1.471\n"));
-  EXPECT_NEAR(shear_energy_J(si, gamma), expected, 2e-3 * expected);
-}
-
-// Friction goes with a measured G (linear diagonals), not with a bias table.
-TEST_F(LabUnits, ShearHysteresisNeedsTheShearRigidity) {
-  dir.write("shear.csv", "strain,tension_N_per_m\n0,0\n1,80\n");
-  const InputError e = error(scene("", "[shear]\nmaterial = \"shear.csv\"\nhysteresis_gf_cm = 1.5\n"));
-  EXPECT_EQ(e.where().key, "shear.hysteresis_gf_cm") << e.what();
-  EXPECT_EQ(e.where().line, 10) << e.what();
 }
 
 // A tension-only shear table's diagonals, once compressed ones push back, carry half the table

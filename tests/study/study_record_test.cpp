@@ -47,5 +47,20 @@ TEST(StudyRecord, SpecimensThatDoNotGroupTheCasesAreRefused) {
   }
 }
 
+// Each run of specimens counts its seeds 1 … N: a record with a seed out of place is refused.
+TEST(StudyRecord, SpecimenSeedsOutOfPlaceAreRefused) {
+  test::TempDir dir;
+  StudySpec spec = two_cases_of_two_specimens();
+  spec.cases[2].values.back().toml = "3";
+  write_study_record(dir.root().string(), spec);
+  try {
+    read_study_record(dir.root().string());
+    ADD_FAILURE() << "a record whose third case has seed 3 was read";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.where().file, study_record_path(dir.root().string()));
+    EXPECT_NE(error.message().find("case 2 should be specimen 1"), std::string::npos) << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace fabform

@@ -11,6 +11,7 @@
 // positive semi-definite. For a deformation that is not isometric, a cell shrinking unevenly in
 // its own plane, k is not zero: the hinge then resists the unevenness as well.
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ struct HingeStencil {
   int count = 0;
 };
 HingeStencil hinge_stencil(const Hinge& hinge);
+/// Where `node` stands in the stencil (it must be one of the hinge's nodes).
+std::size_t stencil_index(const HingeStencil& stencil, int node);
+
+/// The hinge's side in the flat fabric, from its first edge node to its second (m).
+Eigen::Vector3d flat_side(const Model& model, const Hinge& hinge);
 
 /// A property measured along warp and weft as the hinge bends with it: the warp's for an edge
 /// along the weft, between them value_warp·cos²ψ + value_weft·sin²ψ, ψ the bending direction's

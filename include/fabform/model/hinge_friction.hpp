@@ -8,8 +8,10 @@
 // of length l turned by θ), with |k| = 2·sin(θ/2) for |θ| (hinge_bending.hpp). The loop's
 // rounded reversal, over about 0.1 cm⁻¹ of curvature in KES charts, becomes a Huber rounding of
 // |θ| below the angle that curvature makes at the hinge: the friction moment grows from 0 to HB
-// there, and the energy stays smooth for Newton. It is the loading branch only: unbending
-// (the loop's other branch) is not modelled, so a fabric is not held where it has been.
+// there, and the energy stays smooth for Newton; below it the fabric sticks, a rigidity HB/κ_r.
+// It is the loading branch only: unbending (the loop's other branch) is not modelled, so a
+// fabric is not held where it has been, and dynamic, whose fabric would swing back along this
+// branch, is refused. Like B·s·|k|², HB·l·|k| also resists a cell shrinking unevenly in its plane.
 #include <string>
 
 #include "fabform/fabric/hinge.hpp"
@@ -29,8 +31,8 @@ class HingeFriction final : public Term {
   /// hinge's bending length l / (2·s) (a hinge's curvature is 2·s·θ / l).
   double rounding_angle_of(const Model& model, const Hinge& hinge) const;
   /// HB·l·ρ(|k|), ρ the rounded |·| (J), node `moved` at `at`.
-  double hinge_energy(const Model& model, const Hinge& hinge, const Positions& x, int moved,
-                      const Eigen::Vector3d& at) const;
+  double friction_energy(const Model& model, const Hinge& hinge, const Positions& x, int moved,
+                         const Eigen::Vector3d& at) const;
 
   std::string describe(const Model& model) const override;
   Eigen::Vector3d force_at(const Model& model, const Positions& x, int node,
@@ -45,6 +47,7 @@ class HingeFriction final : public Term {
   /// (1 + √3)/(2·ε) in absolute value.
   void bound_stiffness(const Model& model, StiffnessBound& bound) const override;
   bool resists_bending() const override { return true; }
+  std::string refusal(const std::string& solver) const override;
 
  private:
   double hysteresis_warp_N_;

@@ -67,10 +67,6 @@ struct ShearSpec {
   SourceLocation material_where;
   double rigidity_N_m = 0.0;  // G, shear force per width per radian (N/m); 0: from the table
   SourceLocation rigidity_where;
-  // KES-FB1's shear hysteresis 2HG (force per width, N/m) beside G: the diagonals' friction;
-  // 0: none. The friction force rounds in over this shear angle.
-  double hysteresis_N_m = 0.0;
-  double hysteresis_rounding_rad = 0.1 * 3.14159265358979323846 / 180.0;
 };
 
 // [bending]: seed 004's bend springs (stiffness_N_m) or hinges with the fabric's flexural

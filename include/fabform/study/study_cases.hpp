@@ -20,6 +20,8 @@ std::vector<StudyCase> grid_cases(const std::vector<StudyAxis>& axes);
 
 /// The seed of a specimen's imperfection: the key a study with specimens varies last.
 inline constexpr const char* kSpecimenSeedKey = "initial.seed";
+/// The most specimens a study may test of each case.
+inline constexpr int kMaxSpecimens = 1000;
 
 /// Every case `specimens` times in a row, the k-th with initial.seed = k (1 … specimens).
 std::vector<StudyCase> specimen_cases(const std::vector<StudyCase>& cases, int specimens, const SourceLocation& where);
