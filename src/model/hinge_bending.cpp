@@ -1,9 +1,9 @@
 #include "fabform/model/hinge_bending.hpp"
 
-#include <stdexcept>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <stdexcept>
 
 #include "fabform/model/model.hpp"
 

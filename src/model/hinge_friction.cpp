@@ -39,7 +39,7 @@ double HingeFriction::rounding_angle_of(const Model& model, const Hinge& hinge) 
 }
 
 double HingeFriction::friction_energy(const Model& model, const Hinge& hinge, const Positions& x, int moved,
-                                   const Eigen::Vector3d& at) const {
+                                      const Eigen::Vector3d& at) const {
   const double norm = bend_vector(hinge, x, moved, at).norm();
   return friction_moment_of(model, hinge) * side_length(model, hinge) *
          rounded_norm(norm, rounding_angle_of(model, hinge));
@@ -96,7 +96,8 @@ void HingeFriction::add_stiffness(const Model& model, const Positions& x, Stiffn
     if (norm >= rounding) d -= k * k.transpose() / (norm * norm * norm);
     const double scale = friction_moment_of(model, h) * side_length(model, h);
     for (std::size_t r = 0; r < static_cast<std::size_t>(stencil.count); ++r)
-      for (std::size_t c = 0; c <= r; ++c) part.add(stencil.node[r], stencil.node[c], scale * stencil.weight[r] * stencil.weight[c] * d);
+      for (std::size_t c = 0; c <= r; ++c)
+        part.add(stencil.node[r], stencil.node[c], scale * stencil.weight[r] * stencil.weight[c] * d);
   });
 }
 

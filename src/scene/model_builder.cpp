@@ -18,6 +18,7 @@
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/hinge_friction.hpp"
 #include "fabform/model/pressure.hpp"
+#include "fabform/model/shear_friction.hpp"
 #include "fabform/model/wind.hpp"
 #include "fabform/scene/fabric_plausibility.hpp"
 #include "fabform/scene/memory_budget.hpp"
@@ -248,15 +249,17 @@ void check_clear_start(const Scene& scene, const Model& model) {
 // the fabric has them, so the model has their term. From a measured shear rigidity G they are
 // linear both ways with k = 2·G: a cell sheared by γ stretches one diagonal by γ/2 and shortens
 // the other as much, and the two, each standing for the cell's area A, store
-// 2·A·k·(γ/2)²/2 = A·G·γ²/2, the continuum's shear energy.
+// 2·A·k·(γ/2)²/2 = A·G·γ²/2, the continuum's shear energy. KES-FB1's 2HG adds the cells' friction.
 void add_shear(const Scene& scene, Model* model) {
   if (!scene.shear.on) return;
   if (scene.shear.rigidity_N_m > 0.0) {
     const double k = 2.0 * scene.shear.rigidity_N_m;
     model->shear = TensionTable({{-1.0, -k}, {0.0, 0.0}, {1.0, k}}, "shear rigidity");
-    return;
+  } else {
+    model->shear = read_material(scene, scene.shear.material_path, scene.shear.material_where).table;
   }
-  model->shear = read_material(scene, scene.shear.material_path, scene.shear.material_where).table;
+  if (scene.shear.hysteresis_N_m > 0.0)
+    model->terms.push_back(std::make_shared<ShearFriction>(scene.shear.hysteresis_N_m, scene.shear.hysteresis_rounding_rad));
 }
 
 // A cantilever's bending length c gives the rigidity B = m·g₀·c³ (BS 3356, ASTM D1388: the

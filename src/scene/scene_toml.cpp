@@ -185,12 +185,35 @@ void read_fabric(TableReader& r, Scene* scene) {
 
 // KES-FB1 gives G in gf/(cm·degree); fabform works in N/m per radian.
 constexpr double kNewtonsPerGramForce = kStandardGravity_m_s2 * 1e-3;  // a gram-force, by definition
-constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
+// KES-FB1 reports 2HG in gf/cm (× 0.980665 = N/m); the friction acts on four-sided cells.
+void read_shear_hysteresis(TableReader& r, Scene* scene) {
+  ShearSpec& s = scene->shear;
+  const bool in_gf = r.has("hysteresis_gf_cm"), in_si = r.has("hysteresis_N_m");
+  if (in_gf && in_si) r.fail("hysteresis_gf_cm", "give 2HG once: hysteresis_gf_cm or hysteresis_N_m, not both");
+  if (!in_gf && !in_si) {
+    if (r.has("hysteresis_rounding_deg"))
+      r.fail("hysteresis_rounding_deg", "rounds the shear friction: give 2HG as well (hysteresis_gf_cm)");
+    return;
+  }
+  const std::string key = in_gf ? "hysteresis_gf_cm" : "hysteresis_N_m";
+  if (scene->fabric.mesh == FabricSpec::Mesh::triangular)
+    r.fail(key, "shear friction acts on four-sided cells, which a triangular mesh has none of");
+  const double value = r.number(key, 0.0, true);
+  const double cap = in_gf ? 1e3 : 1e3 * kNewtonsPerGramForce / 0.01;
+  if (!(value > 0.0 && value <= cap)) r.fail(key, in_gf ? "must be in (0, 1000] gf/cm" : "must be in (0, 980.665] N/m");
+  s.hysteresis_N_m = in_gf ? value * kNewtonsPerGramForce / 0.01 : value;
+  const double rounding_deg = r.number("hysteresis_rounding_deg", s.hysteresis_rounding_rad / kRadiansPerDegree);
+  // Below 1e-4° the stick would be a shear rigidity half a million times 2HG's per radian.
+  if (!(rounding_deg >= 1e-4 && rounding_deg <= 10.0)) r.fail("hysteresis_rounding_deg", "must be in [0.0001, 10] degrees");
+  s.hysteresis_rounding_rad = rounding_deg * kRadiansPerDegree;
+}
 
 // The diagonal springs follow a bias table (material) or a measured shear rigidity; one of them.
 void read_shear(TableReader r, Scene* scene) {
   ShearSpec& s = scene->shear;
   s.on = true;
+  s.where = r.where();
   const int given = int(r.has("material")) + int(r.has("rigidity_N_m")) + int(r.has("rigidity_gf_cm_deg"));
   if (given != 1)
     throw InputError(r.where(), "give one of material (a bias tension table), rigidity_N_m (G, N/m per radian, "
@@ -206,7 +229,9 @@ void read_shear(TableReader r, Scene* scene) {
     s.rigidity_where = r.locate_key(key);
   }
   scene->fabric.shear_springs = true;
-  r.reject_unknown({"material", "rigidity_N_m", "rigidity_gf_cm_deg"});
+  read_shear_hysteresis(r, scene);
+  r.reject_unknown({"material", "rigidity_N_m", "rigidity_gf_cm_deg", "hysteresis_gf_cm", "hysteresis_N_m",
+                    "hysteresis_rounding_deg"});
 }
 
 // KES-FB reports 2HB in gf·cm/cm (1 gf·cm/cm = 9.80665e-3 N·m/m); only hinges have friction.
@@ -658,6 +683,18 @@ std::string said_at(const SourceLocation& where) {
   return where.line > 0 ? "line " + std::to_string(where.line) : std::string("from the command line");
 }
 
+// Friction in bending or shear is modelled on the KES loops' loading branch alone: a fabric
+// swinging back along it, as dynamic's would, would unbend or unshear elastically.
+void refuse_hysteresis_in_dynamic(const Scene& scene, TableReader& solver) {
+  if (scene.solver.name != "dynamic") return;
+  const bool bending = scene.bending.hysteresis_N.maxCoeff() > 0.0, shear = scene.shear.hysteresis_N_m > 0.0;
+  if (!bending && !shear) return;
+  const std::string section = bending ? "bending" : "shear";
+  solver.fail("name", "the scene has " + section + " friction ([" + section + "] hysteresis_*, " +
+                          said_at(bending ? scene.bending.where : scene.shear.where) + "), modelled on its loading branch alone, from which dynamic's fabric would spring back: "
+                          "use newton or relax");
+}
+
 // Seed 003's relaxation moves a node along its unbalanced force, which a stuck node has whatever
 // its history; friction needs the slip from where the node landed, which only newton and
 // dynamic carry.
@@ -715,11 +752,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
                             scene.solver.name);
   refuse_friction_in_relax(scene, solver);
   refuse_wrapped_edges_in_dynamic(scene, solver);
-  if (scene.bending.hysteresis_N.maxCoeff() > 0.0 && scene.solver.name == "dynamic")
-    solver.fail("name", "the scene has bending friction (bending.hysteresis_*, line " +
-                            std::to_string(scene.bending.where.line) +
-                            "), modelled on its loading branch alone, from which dynamic's fabric would spring back: "
-                            "use newton or relax");
+  refuse_hysteresis_in_dynamic(scene, solver);
   if (scene.clamp.on && scene.solver.name != "newton")
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only newton models, not " + scene.solver.name);

@@ -174,6 +174,38 @@ TEST_F(LabUnits, ShearRigidityStoresTheContinuumShearEnergy) {
   }
 }
 
+// KES-FB1's shear test read off the energy: the shear force per width a fabric sheared by γ holds,
+// T = (1/A)·dE/dγ, follows the loop's loading branch G·γ + HG past the rounding γ₀ = 0.1°, HG =
+// 2HG / 2 with 2HG in gf/cm × 0.980665 = N/m, and G·γ + HG·γ/γ₀ inside it (the stick).
+TEST_F(LabUnits, ShearHysteresisFollowsTheKesLoadingBranch) {
+  const double area = 0.1 * 0.05, g = 40.0, hg = 0.5 * 1.5 * 0.980665, rounding = 0.1 * M_PI / 180.0;
+  for (const std::string& keys : {std::string("hysteresis_gf_cm = 1.5"), std::string("hysteresis_N_m = 1.4709975")}) {
+    const Model model = build(scene("", "[shear]\nrigidity_N_m = 40\n" + keys + "\n"));
+    for (const double gamma : {0.01, 0.03, 0.5 * rounding}) {
+      const double h = 1e-3 * std::min(gamma, rounding);
+      const double traction = (shear_energy_J(model, gamma + h) - shear_energy_J(model, gamma - h)) / (2.0 * h * area);
+      // The weft springs (500 N/m), stretched by γ²/2 in simple shear, store 500·γ⁴/8 per area:
+      // 500·γ³/2 more; the diagonals' strains are ±γ/2 + γ²/8, which adds O(γ³) to T.
+      const double expected = g * gamma + hg * std::min(gamma / rounding, 1.0) + 0.5 * 500.0 * std::pow(gamma, 3);
+      EXPECT_NEAR(traction, expected, 1e-3 * expected) << keys << " γ = " << gamma;
+    }
+  }
+}
+
+// Friction in shear needs four-sided cells and is refused in dynamic, naming the key or the solver.
+TEST_F(LabUnits, ShearHysteresisIsRefusedWhereItCannotAct) {
+  const InputError dynamic = error(scene("", "[shear]\nrigidity_N_m = 40\nhysteresis_gf_cm = 1.5\n"
+                                             "[solver]\nname = \"dynamic\"\n"));
+  EXPECT_EQ(dynamic.where().key, "solver.name") << dynamic.what();
+  EXPECT_NE(std::string(dynamic.what()).find("shear friction ([shear] hysteresis_*, line 8)"), std::string::npos)
+      << dynamic.what();
+  const InputError triangles = error("[fabric]\nshape = \"circle\"\ndiameter_m = 0.1\nmesh = \"triangular\"\n"
+                                     "divisions = 8\nwarp = \"table.csv\"\nweft = \"table.csv\"\n[shear]\n"
+                                     "material = \"table.csv\"\nhysteresis_gf_cm = 1.5\n");
+  EXPECT_EQ(triangles.where().key, "shear.hysteresis_gf_cm") << triangles.what();
+  EXPECT_EQ(triangles.where().line, 10) << triangles.what();
+}
+
 // A tension-only shear table's diagonals, once compressed ones push back, carry half the table
 // each: a small pure shear stores what it stored with the stretched diagonal alone, and a cell
 // squeezed along its bias (by ε, the other bias unstrained) now resists through its diagonals.

@@ -168,10 +168,11 @@ SceneText base_scene(Base base) {
   // The rectangles' shear rigidity and bending in a lab's units: G as FAST and as KES give it,
   // rigidity as a bending length and in µN·m.
   if (base == Base::lift)
-    drape = {{"shear", "[shear]", {{"rigidity_N_m", "40.0"}}}, {"bending", "[bending]",
+    drape = {{"shear", "[shear]",
+              {{"rigidity_N_m", "40.0"}, {"hysteresis_N_m", "1.5"}, {"hysteresis_rounding_deg", "0.1"}}}, {"bending", "[bending]",
               {{"bending_length_cm", "2.0"}, {"hysteresis_Nm_m", "5e-4"}, {"hysteresis_rounding_per_m", "10.0"}}}};
   if (base == Base::wrap)
-    drape = {{"shear", "[shear]", {{"rigidity_gf_cm_deg", "0.8"}}}, {"bending", "[bending]", {{"rigidity_uNm", "7.0"}, {"hysteresis_gf_cm_cm", "0.05"}}}};
+    drape = {{"shear", "[shear]", {{"rigidity_gf_cm_deg", "0.8"}, {"hysteresis_gf_cm", "1.5"}}}, {"bending", "[bending]", {{"rigidity_uNm", "7.0"}, {"hysteresis_gf_cm_cm", "0.05"}}}};
   scene.sections.insert(gravity + 1, drape.begin(), drape.end());
   // Springs wrap the dome's facets' edges, but not in dynamic (the arc's solver), which refuses them.
   if (base != Base::arc) scene.sections[2].entries.push_back({"wrap_edges_deg", "30.0"});
@@ -367,6 +368,16 @@ const std::vector<KeyRow>& key_table() {
        {{"missing", kRemove, R, "shear"}, {"cap", "1e9", A, kSame}, {"and_a_table", "40.0\nmaterial = \"../materials/synthetic/linear-500.csv\"", R, "shear"}}},
       {"shear.rigidity_gf_cm_deg",       T::number,    wrap, _,   R,  R,   R,   _,    "",
        {{"missing", kRemove, R, "shear"}, {"and_N_m", "0.8\nrigidity_N_m = 40.0", R, "shear"}}},
+      // Shear friction, KES's 2HG: in gf/cm beside the wrap's G, in N/m beside the lift's.
+      {"shear.hysteresis_gf_cm",         T::number,    wrap, A,   R,  R,   R,   _,    "",
+       {{"cap", "1000.0", A, kSame}, {"beyond_cap", "1001.0", R, kSame},
+        {"and_N_m", "1.5\nhysteresis_N_m = 1.5", R, kSame}}},
+      {"shear.hysteresis_N_m",           T::number,    lift, _,   R,  R,   R,   _,    "",
+       {{"cap", "980.665", A, kSame}, {"beyond_cap", "981.0", R, kSame},
+        {"missing", kRemove, R, "shear.hysteresis_rounding_deg"}}},
+      {"shear.hysteresis_rounding_deg",  T::number,    lift, A,   R,  R,   R,   _,    "",
+       {{"cap", "10.0", A, kSame}, {"beyond_cap", "10.1", R, kSame}, {"floor", "0.0001", A, kSame},
+        {"below_floor", "0.00009", R, kSame}}},
       {"shear.material",                 T::text,      circle, _, _,  _,   _,   R,    "",
        {{"missing", kRemove, R, "shear"}, {"newline", "\"a\\nb.csv\"", R, kSame}, {"no_such_file", "\"nowhere.csv\"", B, kSame}}},
       {"bending",                        T::table,     circle, A, _,  _,   _,   _,    "", {}},

@@ -5,10 +5,10 @@
 // flat, so it follows the loop's loading branch, M = B·κ + HB·sign κ with HB = 2HB / 2: past a
 // small curvature the friction adds a constant moment HB per width against the bending. Taken as
 // that branch's potential, E = HB·l·|θ| per hinge (the work of a moment HB per width over a side
-// of length l turned by θ), with |k| = 2·sin(θ/2) for |θ| (hinge_bending.hpp). The loop's
-// rounded reversal, over about 0.1 cm⁻¹ of curvature in KES charts, becomes a Huber rounding of
-// |θ| below the angle that curvature makes at the hinge: the friction moment grows from 0 to HB
-// there, and the energy stays smooth for Newton; below it the fabric sticks, a rigidity HB/κ_r.
+// of length l turned by θ), with |k| = 2·sin(θ/2) for |θ| (hinge_bending.hpp). Its corner is a
+// Huber rounding of |θ| below the angle a chosen curvature κ_r makes at the hinge (KES-FB does
+// not report where a fabric slips): the friction moment grows from 0 to HB there, so the energy
+// stays smooth for Newton, and below it the fabric sticks, a rigidity HB/κ_r.
 // It is the loading branch only: unbending (the loop's other branch) is not modelled, so a
 // fabric is not held where it has been, and dynamic, whose fabric would swing back along this
 // branch, is refused. Like B·s·|k|², HB·l·|k| also resists a cell shrinking unevenly in its plane.

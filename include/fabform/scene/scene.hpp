@@ -20,6 +20,9 @@
 
 namespace fabform {
 
+/// Scene keys in degrees: KES-FB1's G per degree, angles of rotation and of shear.
+inline constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
 struct BodySpec {
   std::string name;
   std::string mesh_path;
@@ -63,10 +66,15 @@ struct GravitySpec {
 // the material file of their bias tension or a measured shear rigidity G (KES, FAST).
 struct ShearSpec {
   bool on = false;
+  SourceLocation where;
   std::string material_path;  // "" when the rigidity is given instead
   SourceLocation material_where;
   double rigidity_N_m = 0.0;  // G, shear force per width per radian (N/m); 0: from the table
   SourceLocation rigidity_where;
+  // KES-FB1's shear hysteresis 2HG (force per width, N/m), the cells' friction
+  // (shear_friction.hpp); 0: none. It rounds in over this shear angle (0.1°).
+  double hysteresis_N_m = 0.0;
+  double hysteresis_rounding_rad = 0.1 * kRadiansPerDegree;
 };
 
 // [bending]: seed 004's bend springs (stiffness_N_m) or hinges with the fabric's flexural
