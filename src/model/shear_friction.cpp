@@ -80,11 +80,13 @@ double ShearFriction::cell_energy(const Model& model, int face, const Positions&
 }
 
 std::string ShearFriction::describe(const Model& model) const {
+  std::size_t cells = 0;
+  for (const Face& f : model.fabric.faces()) cells += f.corners == 4 ? 1 : 0;
   char text[300];
   std::snprintf(text, sizeof text,
                 "shear friction: %zu cells shear against half the measured hysteresis 2HG (loading branch; 2HG %.6g "
                 "N/m, rounded over %.6g°)",
-                model.fabric.faces().size(), hysteresis_N_m_, rounding_rad_ * 180.0 / 3.14159265358979323846);
+                cells, hysteresis_N_m_, rounding_rad_ * 180.0 / 3.14159265358979323846);
   return text;
 }
 
