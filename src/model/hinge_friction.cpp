@@ -8,19 +8,17 @@
 
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/model.hpp"
+#include "fabform/model/rounded_abs.hpp"
 
 namespace fabform {
 namespace {
 
 double side_length(const Model& model, const Hinge& hinge) { return flat_side(model, hinge).norm(); }
 
-// |k| rounded below ε (Huber): k²/(2ε) there, |k| − ε/2 past it; continuous with its slope.
-double rounded_norm(double norm, double rounding) {
-  return norm < rounding ? 0.5 * norm * norm / rounding : norm - 0.5 * rounding;
-}
-
 // ρ'(|k|)/|k|: the gradient of ρ(|k|) with respect to k is this times k.
-double rounded_slope_over_norm(double norm, double rounding) { return norm < rounding ? 1.0 / rounding : 1.0 / norm; }
+double rounded_slope_over_norm(double norm, double rounding) {
+  return norm < rounding ? 1.0 / rounding : rounded_abs_slope(norm, rounding) / norm;
+}
 
 }  // namespace
 
@@ -42,7 +40,7 @@ double HingeFriction::friction_energy(const Model& model, const Hinge& hinge, co
                                       const Eigen::Vector3d& at) const {
   const double norm = bend_vector(hinge, x, moved, at).norm();
   return friction_moment_of(model, hinge) * side_length(model, hinge) *
-         rounded_norm(norm, rounding_angle_of(model, hinge));
+         rounded_abs(norm, rounding_angle_of(model, hinge));
 }
 
 std::string HingeFriction::describe(const Model& model) const {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "fabform/model/model.hpp"
+#include "fabform/model/rounded_abs.hpp"
 
 namespace fabform {
 namespace {
@@ -39,16 +40,6 @@ double shear_of(const CellDiagonals& d) {
   return d.scale * ((d.now[0].norm() / d.rest_length[0]) - (d.now[1].norm() / d.rest_length[1]));
 }
 
-// |γ| rounded below γ₀ (Huber) and its first two derivatives.
-double rounded(double gamma, double rounding) {
-  const double a = std::abs(gamma);
-  return a < rounding ? 0.5 * a * a / rounding : a - 0.5 * rounding;
-}
-double rounded_slope(double gamma, double rounding) {
-  return std::abs(gamma) < rounding ? gamma / rounding : (gamma > 0.0 ? 1.0 : -1.0);
-}
-double rounded_curvature(double gamma, double rounding) { return std::abs(gamma) < rounding ? 1.0 / rounding : 0.0; }
-
 // ∂γ/∂(the end `end` of diagonal k): ±s·n_k/L_k, the second diagonal's with the opposite sign.
 // A diagonal crushed to a point has no direction: it then pulls nowhere.
 Eigen::Vector3d shear_gradient(const CellDiagonals& d, std::size_t k, std::size_t end) {
@@ -76,7 +67,7 @@ double ShearFriction::cell_energy(const Model& model, int face, const Positions&
   const Face& f = model.fabric.faces()[static_cast<std::size_t>(face)];
   if (f.corners != 4) return 0.0;
   const CellDiagonals d = diagonals(model, f, x, moved, at);
-  return d.area * 0.5 * hysteresis_N_m_ * rounded(shear_of(d), rounding_rad_);
+  return d.area * 0.5 * hysteresis_N_m_ * rounded_abs(shear_of(d), rounding_rad_);
 }
 
 std::string ShearFriction::describe(const Model& model) const {
@@ -104,7 +95,7 @@ Eigen::Vector3d ShearFriction::force_at(const Model& model, const Positions& x, 
     const Face& face = model.fabric.faces()[static_cast<std::size_t>(f)];
     if (face.corners != 4) continue;
     const CellDiagonals d = diagonals(model, face, x, node, at);
-    const double slope = d.area * 0.5 * hysteresis_N_m_ * rounded_slope(shear_of(d), rounding_rad_);
+    const double slope = d.area * 0.5 * hysteresis_N_m_ * rounded_abs_slope(shear_of(d), rounding_rad_);
     for (std::size_t k = 0; k < 2; ++k)
       for (std::size_t end = 0; end < 2; ++end)
         if (d.ends[k][end] == node) force -= slope * shear_gradient(d, k, end);
@@ -130,13 +121,13 @@ void ShearFriction::add_stiffness(const Model& model, const Positions& x, Stiffn
     std::array<Eigen::Vector3d, 4> g;
     for (std::size_t k = 0; k < 2; ++k)
       for (std::size_t end = 0; end < 2; ++end) node[2 * k + end] = d.ends[k][end], g[2 * k + end] = shear_gradient(d, k, end);
-    const double curvature = friction * rounded_curvature(gamma, rounding_rad_);
+    const double curvature = friction * rounded_abs_curvature(gamma, rounding_rad_);
     for (std::size_t r = 0; r < 4; ++r)
       for (std::size_t c = 0; c <= r; ++c)
         if (curvature > 0.0) part.add(node[r], node[c], curvature * g[r] * g[c].transpose());
     // ρ'·s·∂²ε_k: ∂²|d|/L over the diagonal's ends is ±(I − n·nᵀ)/(L·|d|); the first diagonal's
     // enters with ρ', the second's with −ρ': keep the one that is positive semi-definite.
-    const double slope = friction * rounded_slope(gamma, rounding_rad_);
+    const double slope = friction * rounded_abs_slope(gamma, rounding_rad_);
     const std::size_t k = slope >= 0.0 ? 0 : 1;
     if (d.now[k].norm() == 0.0) return;
     const Eigen::Vector3d n = d.now[k].normalized();
