@@ -4,13 +4,13 @@
 #include <limits>
 #include <stdexcept>
 
+#include "fabform/angles.hpp"
 #include "fabform/output/fabric_figures.hpp"
 
 namespace fabform {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDegPerRad = 57.29577951308232;
 
 // The direction of a face's warp (weft) sides: their sum, each side turned to run the way the
 // first one does in the flat fabric, so opposite sides add rather than cancel.
@@ -38,7 +38,7 @@ Directions side_directions(const Fabric& fabric, const Face& face, const std::ve
 }
 
 double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return kDegPerRad * std::atan2(a.cross(b).norm(), a.dot(b));
+  return kDegreesPerRadian * std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
 double shear_angle_deg(const Fabric& fabric, const Face& face, const std::vector<Eigen::Vector3d>& x) {

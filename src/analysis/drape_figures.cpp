@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fabform/angles.hpp"
 #include "fabform/analysis/drape_coefficient.hpp"
 
 namespace fabform {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The outline resampled at even steps along it and averaged over a window: a lattice circle's
 // outline is a staircase of cell-sized steps, which a window of three cells flattens; folds span
 // many cells and keep their depth.

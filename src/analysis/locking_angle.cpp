@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fabform/angles.hpp"
+
 namespace fabform {
 namespace {
 
-constexpr double kDegPerRad = 57.29577951308232;
 
 double slope_of(const TablePoint& a, const TablePoint& b) {
   return (b.tension_N_per_m - a.tension_N_per_m) / (b.strain - a.strain);
@@ -16,7 +17,7 @@ double slope_of(const TablePoint& a, const TablePoint& b) {
 
 double shear_angle_of_diagonal_strain_deg(double diagonal_strain) {
   const double sine = (1.0 + diagonal_strain) * (1.0 + diagonal_strain) - 1.0;
-  return kDegPerRad * std::asin(std::clamp(sine, -1.0, 1.0));
+  return kDegreesPerRadian * std::asin(std::clamp(sine, -1.0, 1.0));
 }
 
 std::optional<double> locking_angle_deg(const TensionTable& shear) {

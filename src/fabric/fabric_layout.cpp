@@ -5,10 +5,11 @@
 
 #include <Eigen/Geometry>
 
+#include "fabform/angles.hpp"
+
 namespace fabform {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr long long kMaxNodes = 50'000'000LL;
 
 std::string size_reason(const FabricSpec& spec) {

@@ -2,10 +2,11 @@
 
 #include <cmath>
 
+#include "fabform/angles.hpp"
+
 namespace fabform {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Vector3d wrapped(const Fabric& grid, int node, const Eigen::Vector3d& origin,
                         const InitialShape& shape) {

@@ -4,10 +4,11 @@
 
 #include <Eigen/Geometry>
 
+#include "fabform/angles.hpp"
+
 namespace fabform {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

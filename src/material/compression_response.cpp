@@ -1,9 +1,10 @@
 #include "fabform/material/compression_response.hpp"
 
+#include "fabform/angles.hpp"
+
 namespace fabform {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "fabform/angles.hpp"
 #include "fabform/model/model.hpp"
 #include "fabform/model/rounded_abs.hpp"
 
@@ -57,9 +58,8 @@ ShearFriction::ShearFriction(double hysteresis_N_m, double rounding_rad)
     throw std::invalid_argument("shear friction: 2HG and the rounding angle must be positive");
 }
 
-double ShearFriction::shear_angle(const Model& model, int face, const Positions& x, int moved,
-                                  const Eigen::Vector3d& at) const {
-  return shear_of(diagonals(model, model.fabric.faces()[static_cast<std::size_t>(face)], x, moved, at));
+double ShearFriction::shear_angle(const Model& model, int face, const Positions& x) const {
+  return shear_of(diagonals(model, model.fabric.faces()[static_cast<std::size_t>(face)], x, -1, Eigen::Vector3d::Zero()));
 }
 
 double ShearFriction::cell_energy(const Model& model, int face, const Positions& x, int moved,
@@ -77,7 +77,7 @@ std::string ShearFriction::describe(const Model& model) const {
   std::snprintf(text, sizeof text,
                 "shear friction: %zu cells shear against half the measured hysteresis 2HG (loading branch; 2HG %.6g "
                 "N/m, rounded over %.6g°)",
-                cells, hysteresis_N_m_, rounding_rad_ * 180.0 / 3.14159265358979323846);
+                cells, hysteresis_N_m_, rounding_rad_ * kDegreesPerRadian);
   return text;
 }
 

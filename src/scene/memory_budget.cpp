@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "fabform/angles.hpp"
 #include "fabform/error.hpp"
 
 namespace fabform {
@@ -17,7 +18,6 @@ namespace {
 // sit below those, so that only a run that certainly cannot fit is refused.
 constexpr double kLeastBytesPerNode = 750.0;
 constexpr double kLeastBytesPerNodeNewton = 5000.0;
-constexpr double kPi = 3.14159265358979323846;
 
 // A "Key: value kB" line of /proc/meminfo, in bytes; infinity if absent.
 double meminfo_bytes(const char* key) {

@@ -197,14 +197,18 @@ void read_shear_hysteresis(TableReader& r, Scene* scene) {
     return;
   }
   const std::string key = in_gf ? "hysteresis_gf_cm" : "hysteresis_N_m";
-  if (scene->fabric.mesh == FabricSpec::Mesh::triangular)
-    r.fail(key, "shear friction acts on four-sided cells, which a triangular mesh has none of");
+  const FabricSpec::Mesh mesh = scene->fabric.mesh;
+  if (mesh == FabricSpec::Mesh::arc || mesh == FabricSpec::Mesh::jittered)
+    r.fail(key, std::string("shear friction reads a cell's shear from its diagonals, which is exact on a lattice's "
+                            "rectangular cells only: use mesh = \"quadrangular\" or \"triangular\", not \"") +
+                    to_string(mesh) + "\"");
   const double value = r.number(key, 0.0, true);
   const double cap = in_gf ? 1e3 : 1e3 * kNewtonsPerGramForce / 0.01;
   if (!(value > 0.0 && value <= cap)) r.fail(key, in_gf ? "must be in (0, 1000] gf/cm" : "must be in (0, 980.665] N/m");
   s.hysteresis_N_m = in_gf ? value * kNewtonsPerGramForce / 0.01 : value;
+  s.hysteresis_where = r.locate_key(key);
   const double rounding_deg = r.number("hysteresis_rounding_deg", s.hysteresis_rounding_rad / kRadiansPerDegree);
-  // Below 1e-4° the stick would be a shear rigidity half a million times 2HG's per radian.
+  // At 1e-4° the stick is already a shear rigidity HG/γ₀ of 2.9e5 × 2HG per radian.
   if (!(rounding_deg >= 1e-4 && rounding_deg <= 10.0)) r.fail("hysteresis_rounding_deg", "must be in [0.0001, 10] degrees");
   s.hysteresis_rounding_rad = rounding_deg * kRadiansPerDegree;
 }
@@ -251,8 +255,9 @@ void read_bending_hysteresis(TableReader& r, BendingSpec* b) {
     r.fail(key, in_gf ? "must be in [0, 1000] gf·cm/cm, one of them positive"
                       : "must be in [0, 9.80665] N·m/m, one of them positive");
   b->hysteresis_N = in_gf ? kNewtonsPerGramForce * value : value;
+  b->hysteresis_where = r.locate_key(key);
   b->hysteresis_rounding_per_m = r.number("hysteresis_rounding_per_m", b->hysteresis_rounding_per_m);
-  // Below 1e-3 1/m (a bend of radius 1 km) the stick would be a rigidity a million times 2HB's.
+  // At 1e-3 1/m (a bend of radius 1 km) the stick is already a rigidity HB/κ_r of 500 m × 2HB.
   if (!(b->hysteresis_rounding_per_m >= 1e-3 && b->hysteresis_rounding_per_m <= 1e4))
     r.fail("hysteresis_rounding_per_m", "must be in [0.001, 1e4] 1/m");
 }
@@ -690,8 +695,8 @@ void refuse_hysteresis_in_dynamic(const Scene& scene, TableReader& solver) {
   const bool bending = scene.bending.hysteresis_N.maxCoeff() > 0.0, shear = scene.shear.hysteresis_N_m > 0.0;
   if (!bending && !shear) return;
   const std::string section = bending ? "bending" : "shear";
-  solver.fail("name", "the scene has " + section + " friction ([" + section + "] hysteresis_*, " +
-                          said_at(bending ? scene.bending.where : scene.shear.where) + "), modelled on its loading branch alone, from which dynamic's fabric would spring back: "
+  solver.fail("name", "the scene has " + section + " friction (" +
+                          said_at(bending ? scene.bending.hysteresis_where : scene.shear.hysteresis_where) + "), modelled on its loading branch alone, from which dynamic's fabric would spring back: "
                           "use newton or relax");
 }
 

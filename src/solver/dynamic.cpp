@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "fabform/angles.hpp"
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/solver_loop.hpp"
@@ -47,7 +48,6 @@ std::vector<double> node_masses(const Model& model, double areal_density_kg_m2) 
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/hinge_friction.hpp"
+#include "fabform/model/shear_friction.hpp"
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
@@ -192,18 +193,23 @@ TEST_F(LabUnits, ShearHysteresisFollowsTheKesLoadingBranch) {
   }
 }
 
-// Friction in shear needs four-sided cells and is refused in dynamic, naming the key or the solver.
+// Friction in shear reads a cell's shear from its diagonals, exact on a lattice's rectangles only:
+// refused on a jittered mesh at its key, and in dynamic at the solver, saying where it was given.
 TEST_F(LabUnits, ShearHysteresisIsRefusedWhereItCannotAct) {
   const InputError dynamic = error(scene("", "[shear]\nrigidity_N_m = 40\nhysteresis_gf_cm = 1.5\n"
                                              "[solver]\nname = \"dynamic\"\n"));
   EXPECT_EQ(dynamic.where().key, "solver.name") << dynamic.what();
-  EXPECT_NE(std::string(dynamic.what()).find("shear friction ([shear] hysteresis_*, line 8)"), std::string::npos)
-      << dynamic.what();
-  const InputError triangles = error("[fabric]\nshape = \"circle\"\ndiameter_m = 0.1\nmesh = \"triangular\"\n"
-                                     "divisions = 8\nwarp = \"table.csv\"\nweft = \"table.csv\"\n[shear]\n"
-                                     "material = \"table.csv\"\nhysteresis_gf_cm = 1.5\n");
-  EXPECT_EQ(triangles.where().key, "shear.hysteresis_gf_cm") << triangles.what();
-  EXPECT_EQ(triangles.where().line, 10) << triangles.what();
+  EXPECT_NE(std::string(dynamic.what()).find("shear friction (line 10)"), std::string::npos) << dynamic.what();
+  const InputError jittered = error("[fabric]\nshape = \"circle\"\ndiameter_m = 0.1\nmesh = \"jittered\"\n"
+                                    "divisions = 8\njitter = 0.15\nwarp = \"table.csv\"\nweft = \"table.csv\"\n"
+                                    "[shear]\nmaterial = \"table.csv\"\nhysteresis_gf_cm = 1.5\n");
+  EXPECT_EQ(jittered.where().key, "shear.hysteresis_gf_cm") << jittered.what();
+  EXPECT_EQ(jittered.where().line, 11) << jittered.what();
+  EXPECT_NE(std::string(jittered.what()).find("not \"jittered\""), std::string::npos) << jittered.what();
+  const Model triangles = build("[fabric]\nshape = \"circle\"\ndiameter_m = 0.1\nmesh = \"triangular\"\n"
+                                "divisions = 8\nwarp = \"table.csv\"\nweft = \"table.csv\"\n[shear]\n"
+                                "material = \"table.csv\"\nhysteresis_gf_cm = 1.5\n");
+  EXPECT_NE(test::find_term<ShearFriction>(triangles), nullptr);
 }
 
 // A tension-only shear table's diagonals, once compressed ones push back, carry half the table

@@ -6,11 +6,14 @@
 // the shear springs' (a measured G or a bias table), this term the friction, per four-sided cell
 // E = A·HG·ρ(γ), A the cell's flat area and ρ a Huber rounding of |γ| over a chosen angle γ₀
 // (KES-FB1 does not report where a fabric slips): below it the cell sticks, a shear rigidity
-// HG/γ₀. The cell's shear angle is read from its diagonals' strains, γ = (ε₁ − ε₂)·L₁·L₂ / (2·A),
-// exact to first order for any parallelogram (a square's diagonals stretch by ±γ/2) and blind
-// to the cell's stretch along warp or weft, which strains both diagonals alike. The loading
+// HG/γ₀. The cell's shear angle is read from its diagonals' strains, γ = (ε₁ − ε₂)·L₁·L₂ / (2·A):
+// on a lattice's rectangular cells exact to first order (a square's diagonals stretch by ±γ/2)
+// and blind to stretch along warp or weft, which strains both diagonals alike; on a rhombus or
+// a jittered or arc mesh's cells neither holds, so the scene refuses those meshes. The loading
 // branch only: unshearing is not modelled, and dynamic, whose fabric would swing back along it,
-// is refused. 2HG, the small-amplitude width, is one constant; 2HG5 is not used.
+// is refused. 2HG, the small-amplitude width, is one constant; 2HG5 is not used. The term joins
+// a cell's four corners, which relax's colours keep apart because [shear]'s diagonal springs
+// and the cell's sides join each pair.
 #include <string>
 
 #include "fabform/model/term.hpp"
@@ -22,9 +25,8 @@ class ShearFriction final : public Term {
   /// KES's 2HG (force per width, N/m) and the shear angle (radians) over which HG rounds in.
   ShearFriction(double hysteresis_N_m, double rounding_rad);
 
-  /// The shear angle of four-sided face `face` (radians), node `moved` at `at`.
-  double shear_angle(const Model& model, int face, const Positions& x, int moved = -1,
-                     const Eigen::Vector3d& at = Eigen::Vector3d::Zero()) const;
+  /// The shear angle of four-sided face `face` at x (radians).
+  double shear_angle(const Model& model, int face, const Positions& x) const;
 
   std::string describe(const Model& model) const override;
   Eigen::Vector3d force_at(const Model& model, const Positions& x, int node,

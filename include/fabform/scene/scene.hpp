@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "fabform/angles.hpp"
 #include "fabform/error.hpp"
 #include "fabform/fabric/fabric.hpp"
 #include "fabform/fabric/initial_shape.hpp"
@@ -19,9 +20,6 @@
 #include "fabform/solver/solver_registry.hpp"
 
 namespace fabform {
-
-/// Scene keys in degrees: KES-FB1's G per degree, angles of rotation and of shear.
-inline constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
 
 struct BodySpec {
   std::string name;
@@ -75,6 +73,7 @@ struct ShearSpec {
   // (shear_friction.hpp); 0: none. It rounds in over this shear angle (0.1°).
   double hysteresis_N_m = 0.0;
   double hysteresis_rounding_rad = 0.1 * kRadiansPerDegree;
+  SourceLocation hysteresis_where;
 };
 
 // [bending]: seed 004's bend springs (stiffness_N_m) or hinges with the fabric's flexural
@@ -91,6 +90,7 @@ struct BendingSpec {
   // friction (hinge_friction.hpp); 0: none. The friction moment rounds in over this curvature.
   Eigen::Vector2d hysteresis_N = Eigen::Vector2d::Zero();
   double hysteresis_rounding_per_m = 10.0;
+  SourceLocation hysteresis_where;
   bool hinges() const { return rigidity_Nm.maxCoeff() > 0.0 || bending_length_m.maxCoeff() > 0.0; }
   SourceLocation where;
   SourceLocation value_where;  // the key that gave the rigidity or bending length
