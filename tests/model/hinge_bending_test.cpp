@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "fabform/model/model.hpp"
+#include "support/flat_models.hpp"
 #include "support/term_checks.hpp"
 
 namespace fabform {
@@ -32,17 +33,11 @@ std::vector<Fabric> hinged_fabrics() {
           hinged({0.3, 0.3, 8, 8, FabricSpec::Shape::circle, FabricSpec::Mesh::triangular}), hinged(arc)};
 }
 
-std::vector<Eigen::Vector3d> rest_of(const Fabric& fabric) {
-  std::vector<Eigen::Vector3d> x;
-  for (int k = 0; k < fabric.node_count(); ++k) x.push_back(fabric.rest_position(k));
-  return x;
-}
-
 // Σ w = 0 and Σ w·q = 0 over the flat points, to rounding: weights ~1/h, positions ~0.3 m.
 TEST(HingeWeights, AreTheFlatPointsAffineDependency) {
   for (const Fabric& fabric : hinged_fabrics()) {
     ASSERT_FALSE(fabric.hinges().empty());
-    const std::vector<Eigen::Vector3d> x = rest_of(fabric);
+    const std::vector<Eigen::Vector3d> x = test::flat_positions(fabric);
     for (const Hinge& h : fabric.hinges()) {
       const HingeStencil stencil = hinge_stencil(h);
       double sum = 0.0, scale = 0.0;
@@ -59,7 +54,7 @@ TEST(HingeWeights, AreTheFlatPointsAffineDependency) {
 TEST(HingeBending, OneFaceFoldedStoresTheDiscreteShellEnergy) {
   const double rigidity = 6e-5;
   for (const Fabric& fabric : hinged_fabrics()) {
-    const std::vector<Eigen::Vector3d> flat = rest_of(fabric);
+    const std::vector<Eigen::Vector3d> flat = test::flat_positions(fabric);
     for (const Hinge& h : fabric.hinges()) {
       const Eigen::Vector3d origin = flat[h.edge[0]];
       const Eigen::Vector3d axis = (flat[h.edge[1]] - origin).normalized();
@@ -79,7 +74,7 @@ TEST(HingeBending, StencilIsTheBendVectorsDerivative) {
   std::mt19937 rng(7u);
   std::uniform_real_distribution<double> jitter(-0.02, 0.02);
   for (const Fabric& fabric : hinged_fabrics()) {
-    std::vector<Eigen::Vector3d> x = rest_of(fabric);
+    std::vector<Eigen::Vector3d> x = test::flat_positions(fabric);
     for (auto& p : x) p += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
     for (const Hinge& h : fabric.hinges()) {
       const HingeStencil stencil = hinge_stencil(h);
@@ -107,7 +102,7 @@ TEST(HingeBending, RigidAndAffineMotionsStoreNothingMore) {
   std::mt19937 rng(3u);
   std::uniform_real_distribution<double> jitter(-0.01, 0.01);
   for (const Fabric& fabric : hinged_fabrics()) {
-    const std::vector<Eigen::Vector3d> flat = rest_of(fabric);
+    const std::vector<Eigen::Vector3d> flat = test::flat_positions(fabric);
     std::vector<Eigen::Vector3d> sheared, bent = flat, bent_turned;
     for (auto& p : bent) p.z() += jitter(rng);
     for (std::size_t k = 0; k < flat.size(); ++k) {
@@ -128,7 +123,7 @@ TEST(HingeBending, CollapsedFaceKeepsForcesBounded) {
   Model model{hinged({0.1, 0.1, 2, 2}), TensionTable({{0, 0}, {1, 500}}, "t"), TensionTable({{0, 0}, {1, 500}}, "t"),
               std::vector<AxisMask>(9, 0), {}, {}};
   const HingeBending hinges(6e-5);
-  std::vector<Eigen::Vector3d> x = rest_of(model.fabric);
+  std::vector<Eigen::Vector3d> x = test::flat_positions(model.fabric);
   for (auto& p : x)
     if (p.y() > 0.06) p.y() = 0.05 + 1e-13, p.z() = 1e-14;  // the top row onto the middle row
   for (int k = 0; k < model.node_count(); ++k) {
@@ -168,12 +163,10 @@ TEST(HingeBending, CylinderStoresHalfBKappaSquaredPerArea) {
 TEST(HingeBending, TermAgreesWithItsEnergyByFiniteDifferences) {
   const HingeBending hinges(5.56e-5);
   for (const Fabric& fabric : hinged_fabrics()) {
-    const TensionTable table({{0, 0}, {1, 500}}, "t");
-    const Model model{fabric, table, table, std::vector<AxisMask>(static_cast<std::size_t>(fabric.node_count()), 0),
-                      {}, {}};
+    const Model model = test::free_model(fabric);
     std::mt19937 rng(21u);
     std::uniform_real_distribution<double> jitter(-0.01, 0.01);
-    Positions x = rest_of(fabric);
+    Positions x = test::flat_positions(fabric);
     for (auto& p : x) p += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
     test::expect_force_is_minus_the_gradient(model, hinges, x, 1e-6, 1e-6);
     test::expect_node_changes_are_the_whole(model, hinges, x, {0, fabric.node_count() / 2},

@@ -14,6 +14,7 @@
 
 #include "fabform/model/hinge_bending.hpp"
 #include "fabform/model/model.hpp"
+#include "support/flat_models.hpp"
 #include "support/term_checks.hpp"
 
 namespace fabform {
@@ -21,21 +22,13 @@ namespace {
 
 Model hinged_model(FabricSpec spec) {
   spec.hinges = true;
-  const Fabric fabric(spec);
-  const TensionTable table({{0, 0}, {1, 500}}, "t");
-  return Model{fabric, table, table, std::vector<AxisMask>(static_cast<std::size_t>(fabric.node_count()), 0), {}, {}};
-}
-
-Positions rest_of(const Fabric& fabric) {
-  Positions x;
-  for (int k = 0; k < fabric.node_count(); ++k) x.push_back(fabric.rest_position(k));
-  return x;
+  return test::free_model(Fabric(spec));
 }
 
 TEST(HingeFriction, FoldPastTheRoundingStoresTheFrictionMomentsWork) {
   const Model model = hinged_model({0.2, 0.1, 6, 3});
   const HingeFriction friction(4e-4, 4e-4, 10.0);
-  const Positions flat = rest_of(model.fabric);
+  const Positions flat = test::flat_positions(model.fabric);
   for (const Hinge& h : model.fabric.hinges()) {
     const Eigen::Vector3d origin = flat[h.edge[0]];
     const Eigen::Vector3d axis = (flat[h.edge[1]] - origin).normalized();
@@ -87,7 +80,7 @@ TEST(HingeFriction, TermAgreesWithItsEnergyByFiniteDifferences) {
       const HingeFriction friction(5e-4, 3e-4, 10.0);
       std::mt19937 rng(21u);
       std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
-      Positions x = rest_of(model.fabric);
+      Positions x = test::flat_positions(model.fabric);
       for (auto& p : x) p += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
       SCOPED_TRACE(amplitude);
       test::expect_force_is_minus_the_gradient(model, friction, x, 1e-3 * amplitude, 1e-6);
@@ -110,7 +103,7 @@ TEST(HingeFriction, BoundCoversTheStiffnessAtAnyState) {
   std::mt19937 rng(5u);
   for (const double amplitude : {0.0, 1e-6, 1e-2}) {
     std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
-    Positions x = rest_of(model.fabric);
+    Positions x = test::flat_positions(model.fabric);
     for (auto& p : x) p += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
     const Eigen::MatrixXd k = test::dense_stiffness(model, friction, x);
     for (int row = 0; row < k.rows(); ++row)

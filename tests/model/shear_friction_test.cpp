@@ -12,22 +12,13 @@
 #include <Eigen/Eigenvalues>
 
 #include "fabform/model/model.hpp"
+#include "support/flat_models.hpp"
 #include "support/term_checks.hpp"
 
 namespace fabform {
 namespace {
 
-Model model_of(const FabricSpec& spec) {
-  const Fabric fabric(spec);
-  const TensionTable table({{0, 0}, {1, 500}}, "t");
-  return Model{fabric, table, table, std::vector<AxisMask>(static_cast<std::size_t>(fabric.node_count()), 0), {}, {}};
-}
-
-Positions rest_of(const Fabric& fabric) {
-  Positions x;
-  for (int k = 0; k < fabric.node_count(); ++k) x.push_back(fabric.rest_position(k));
-  return x;
-}
+Model model_of(const FabricSpec& spec) { return test::free_model(Fabric(spec)); }
 
 // Square cells, oblong ones (2:1) and a jittered circle's.
 std::vector<FabricSpec> meshes() {
@@ -40,7 +31,7 @@ TEST(ShearFriction, ShearAngleIsTheCellsSimpleShearAndIgnoresItsStretch) {
   const ShearFriction friction(1.0, 1e-3);
   for (const FabricSpec& spec : {FabricSpec{0.2, 0.1, 6, 3}, FabricSpec{0.2, 0.1, 4, 8}}) {
     const Model model = model_of(spec);
-    const Positions flat = rest_of(model.fabric);
+    const Positions flat = test::flat_positions(model.fabric);
     const double gamma = 1e-4;
     Positions sheared = flat, stretched = flat;
     for (std::size_t k = 0; k < flat.size(); ++k) {
@@ -63,7 +54,7 @@ TEST(ShearFriction, ForceAndNodeChangesAgreeWithItsEnergy) {
       const ShearFriction friction(1.5, 1.7e-3);
       std::mt19937 rng(11u);
       std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
-      Positions x = rest_of(model.fabric);
+      Positions x = test::flat_positions(model.fabric);
       for (auto& p : x) p += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
       SCOPED_TRACE(amplitude);
       // Steps small against the cells' distance from the rounding's corner, where ρ'' jumps.
@@ -100,7 +91,7 @@ TEST(ShearFriction, StiffnessIsTheHessianMadePositiveSemiDefinite) {
     for (const double amplitude : {1e-2, 1e-5}) {
       std::mt19937 rng(17u);
       std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
-      Positions x = rest_of(model.fabric);
+      Positions x = test::flat_positions(model.fabric);
       for (auto& p : x) p += Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
       const Eigen::MatrixXd k = test::dense_stiffness(model, friction, x);
       const Eigen::MatrixXd h = hessian_by_differences(model, friction, x, 1e-4 * amplitude);
@@ -117,7 +108,7 @@ TEST(ShearFriction, StiffnessIsTheHessianMadePositiveSemiDefinite) {
 TEST(ShearFriction, OnOneCellTheStiffnessIsTheHessianWhereTheLeftOutDiagonalMovesRigidly) {
   const Model model = model_of(FabricSpec{0.01, 0.01, 1, 1});
   const ShearFriction friction(1.5, 1.7e-3);
-  Positions x = rest_of(model.fabric);
+  Positions x = test::flat_positions(model.fabric);
   for (const double shear : {0.01, -0.01, 1e-4}) {
     Positions s = x;
     for (std::size_t k = 0; k < s.size(); ++k) s[k].x() += shear * x[k].y(), s[k].z() += 1e-3 * x[k].x();
