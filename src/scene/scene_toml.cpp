@@ -186,17 +186,23 @@ void read_fabric(TableReader& r, Scene* scene) {
 // KES-FB1 gives G in gf/(cm·degree); fabform works in N/m per radian.
 constexpr double kNewtonsPerGramForce = kStandardGravity_m_s2 * 1e-3;  // a gram-force, by definition
 
+// A KES hysteresis is given in the lab's unit or in SI, not both; its rounding only with it.
+// Returns the key that gives it, or "" for none.
+std::string hysteresis_key(TableReader& r, const std::string& lab, const std::string& si, const std::string& rounding,
+                           const std::string& kind, const std::string& what) {
+  const bool in_lab = r.has(lab), in_si = r.has(si);
+  if (in_lab && in_si) r.fail(lab, "give " + what + " once: " + lab + " or " + si + ", not both");
+  if (!in_lab && !in_si && r.has(rounding))
+    r.fail(rounding, "rounds the " + kind + " friction: give " + what + " as well (" + lab + ")");
+  return in_lab ? lab : in_si ? si : "";
+}
+
 // KES-FB1 reports 2HG in gf/cm (× 0.980665 = N/m); the friction acts on four-sided cells.
 void read_shear_hysteresis(TableReader& r, Scene* scene) {
   ShearSpec& s = scene->shear;
-  const bool in_gf = r.has("hysteresis_gf_cm"), in_si = r.has("hysteresis_N_m");
-  if (in_gf && in_si) r.fail("hysteresis_gf_cm", "give 2HG once: hysteresis_gf_cm or hysteresis_N_m, not both");
-  if (!in_gf && !in_si) {
-    if (r.has("hysteresis_rounding_deg"))
-      r.fail("hysteresis_rounding_deg", "rounds the shear friction: give 2HG as well (hysteresis_gf_cm)");
-    return;
-  }
-  const std::string key = in_gf ? "hysteresis_gf_cm" : "hysteresis_N_m";
+  const std::string key = hysteresis_key(r, "hysteresis_gf_cm", "hysteresis_N_m", "hysteresis_rounding_deg", "shear", "2HG");
+  if (key.empty()) return;
+  const bool in_gf = key == "hysteresis_gf_cm";
   const FabricSpec::Mesh mesh = scene->fabric.mesh;
   if (mesh == FabricSpec::Mesh::arc || mesh == FabricSpec::Mesh::jittered)
     r.fail(key, std::string("shear friction reads a cell's shear from its diagonals, which is exact on a lattice's "
@@ -240,14 +246,10 @@ void read_shear(TableReader r, Scene* scene) {
 
 // KES-FB reports 2HB in gf·cm/cm (1 gf·cm/cm = 9.80665e-3 N·m/m); only hinges have friction.
 void read_bending_hysteresis(TableReader& r, BendingSpec* b) {
-  const bool in_gf = r.has("hysteresis_gf_cm_cm"), in_si = r.has("hysteresis_Nm_m");
-  if (in_gf && in_si) r.fail("hysteresis_gf_cm_cm", "give 2HB once: hysteresis_gf_cm_cm or hysteresis_Nm_m, not both");
-  if (!in_gf && !in_si) {
-    if (r.has("hysteresis_rounding_per_m"))
-      r.fail("hysteresis_rounding_per_m", "rounds the bending friction: give 2HB as well (hysteresis_gf_cm_cm)");
-    return;
-  }
-  const std::string key = in_gf ? "hysteresis_gf_cm_cm" : "hysteresis_Nm_m";
+  const std::string key =
+      hysteresis_key(r, "hysteresis_gf_cm_cm", "hysteresis_Nm_m", "hysteresis_rounding_per_m", "bending", "2HB");
+  if (key.empty()) return;
+  const bool in_gf = key == "hysteresis_gf_cm_cm";
   if (!b->hinges()) r.fail(key, "bending friction acts in hinges: give the rigidity (rigidity_uNm, rigidity_Nm or "
                                 "bending_length_cm), not stiffness_N_m");
   const Eigen::Vector2d value = r.number_or_pair(key);
