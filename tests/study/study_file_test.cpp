@@ -31,7 +31,7 @@ InputError error_of(const std::string& text) {
 
 TEST(StudyFile, ShippedStudiesReadAndFitTheirScenes) {
   for (const char* name : {"dome_tolerance_solver", "cup_friction_depth", "cusick_fabrics", "cusick_measured",
-                           "cusick_bending_friction"}) {
+                           "cusick_bending_friction", "cusick_shear_friction"}) {
     const StudySpec spec = load_study(test::source_path(std::string("studies/") + name + ".toml"));
     EXPECT_EQ(spec.name, name);
     EXPECT_FALSE(spec.cases.empty());
