@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include "fabform/angles.hpp"
 #include "fabform/model/model.hpp"
@@ -59,7 +60,8 @@ ShearFriction::ShearFriction(double hysteresis_N_m, double rounding_rad)
 }
 
 double ShearFriction::shear_angle(const Model& model, int face, const Positions& x) const {
-  return shear_of(diagonals(model, model.fabric.faces()[static_cast<std::size_t>(face)], x, -1, Eigen::Vector3d::Zero()));
+  const Face& f = model.fabric.faces()[static_cast<std::size_t>(face)];
+  return shear_of(diagonals(model, f, x, -1, Eigen::Vector3d::Zero()));
 }
 
 double ShearFriction::cell_energy(const Model& model, int face, const Positions& x, int moved,
@@ -120,11 +122,14 @@ void ShearFriction::add_stiffness(const Model& model, const Positions& x, Stiffn
     std::array<int, 4> node{};
     std::array<Eigen::Vector3d, 4> g;
     for (std::size_t k = 0; k < 2; ++k)
-      for (std::size_t end = 0; end < 2; ++end) node[2 * k + end] = d.ends[k][end], g[2 * k + end] = shear_gradient(d, k, end);
-    const double curvature = friction * rounded_abs_curvature(gamma, rounding_rad_);
-    for (std::size_t r = 0; r < 4; ++r)
-      for (std::size_t c = 0; c <= r; ++c)
-        if (curvature > 0.0) part.add(node[r], node[c], curvature * g[r] * g[c].transpose());
+      for (std::size_t end = 0; end < 2; ++end) {
+        node[2 * k + end] = d.ends[k][end];
+        g[2 * k + end] = shear_gradient(d, k, end);
+      }
+    // ρ''·g·gᵀ, inside the rounding only.
+    if (const double curvature = friction * rounded_abs_curvature(gamma, rounding_rad_); curvature > 0.0)
+      for (std::size_t r = 0; r < 4; ++r)
+        for (std::size_t c = 0; c <= r; ++c) part.add(node[r], node[c], curvature * g[r] * g[c].transpose());
     // ρ'·s·∂²ε_k: ∂²|d|/L over the diagonal's ends is ±(I − n·nᵀ)/(L·|d|); the first diagonal's
     // enters with ρ', the second's with −ρ': keep the one that is positive semi-definite.
     const double slope = friction * rounded_abs_slope(gamma, rounding_rad_);
