@@ -19,9 +19,11 @@ Usage: /usr/bin/python3 tools/derive_petrak2025.py [--check]   (--check: exit 1 
 exit 2 on a usage error or a malformed fabrics.csv, one line naming its line, nothing written)
 Standard library only.
 """
-import csv
 import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from commented_csv import Malformed, read_rows  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 DATA = ROOT / "materials" / "petrak2025"
@@ -32,20 +34,10 @@ NUMBERS = ("areal_mass_g_m2", "stretch_warp_g_s2", "stretch_weft_g_s2", "shear_g
            "bending_weft_g_mm2_s2")
 
 
-class Malformed(Exception):
-    """fabrics.csv cannot be read: the message names its line and what is wrong."""
-
-
 def fabrics():
     path = DATA / "fabrics.csv"
-    with open(path, newline="") as f:
-        numbered = [(n, line) for n, line in enumerate(f, 1) if not line.startswith("#")]
-    reader = csv.DictReader(line for _, line in numbered)
-    missing = [c for c in ("id", "composition", "weave") + NUMBERS if c not in (reader.fieldnames or [])]
-    if missing:
-        raise Malformed("%s: no column %s" % (path, ", ".join(missing)))
     rows = []
-    for (n, _), row in zip(numbered[1:], reader):
+    for n, row in read_rows(path, ("id", "composition", "weave") + NUMBERS, what="fabric"):
         for column in NUMBERS:
             try:
                 value = float(row[column] or "")
@@ -54,8 +46,6 @@ def fabrics():
             if not value > 0.0:
                 raise Malformed("%s line %d: %s = %r must be positive" % (path, n, column, row[column]))
         rows.append(row)
-    if not rows:
-        raise Malformed("%s: no fabric" % path)
     return rows
 
 

@@ -18,6 +18,9 @@ import pathlib
 import re
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from commented_csv import Malformed, read_rows  # noqa: E402
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 MEASURED = ROOT / "materials" / "petrak2025" / "fabrics.csv"
 FABRIC_OF_WARP = re.compile(r"petrak2025/(\w+)_warp\.csv$")
@@ -32,21 +35,6 @@ SUMMARY_COLUMNS = ("fabric.warp", "specimens", "converged", "drape_coefficient m
 MEASURED_COLUMNS = ("id", "composition", "areal_mass_g_m2", "measured_dc", "clo3d_dc")
 
 
-def read_csv(path, columns):
-    """The rows of a CSV (its # lines skipped) that has every one of `columns`."""
-    if not path.is_file():
-        raise InputError("%s: no such file" % path)
-    with open(path, newline="") as f:
-        reader = csv.DictReader(line for line in f if not line.startswith("#"))
-        rows = list(reader)
-        missing = [c for c in columns if c not in (reader.fieldnames or [])]
-    if missing:
-        raise InputError("%s: no column '%s'" % (path, missing[0]))
-    if not rows:
-        raise InputError("%s: no rows" % path)
-    return rows
-
-
 def number(text, path, line, what):
     try:
         return float(text)
@@ -55,14 +43,14 @@ def number(text, path, line, what):
 
 
 def comparison(study_dir):
-    measured = {row["id"]: row for row in read_csv(MEASURED, MEASURED_COLUMNS)}
+    measured = {row["id"]: row for _, row in read_rows(MEASURED, MEASURED_COLUMNS)}
     summary = study_dir / "study_specimens.csv"
-    rows = read_csv(summary, SUMMARY_COLUMNS)
+    rows = read_rows(summary, SUMMARY_COLUMNS)
     seen = set()
     lines = ["| fabric | measured DC (%) | fabform DC (%), mean ± sd | fabform − measured | folds | CLO3D DC (%) | CLO3D − measured |",
              "|---|---:|---:|---:|---:|---:|---:|"]
     ours, theirs = [], []
-    for line, row in enumerate(rows, start=2):
+    for line, row in rows:
         match = FABRIC_OF_WARP.search(row.get("fabric.warp") or "")
         if not match or match.group(1) not in measured:
             raise InputError("%s:%d: a case that is none of %s's fabrics" % (summary, line, MEASURED.name))
@@ -96,7 +84,7 @@ def main(argv):
     try:
         text = comparison(study_dir)
         (study_dir / "against_measured.md").write_text(text)
-    except (InputError, csv.Error, OSError) as error:
+    except (InputError, Malformed, csv.Error, OSError) as error:
         print("drape_against_measured: %s" % error, file=sys.stderr)
         return 2
     print(text, end="")
