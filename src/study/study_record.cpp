@@ -32,8 +32,9 @@ void check_specimens(const StudySpec& spec) {
   const auto fail = [&](const std::string& why) {
     throw InputError(spec.specimens_where, "malformed study record: " + why);
   };
-  if (spec.specimens < 1 || spec.specimens > kMaxSpecimens || spec.cases.size() % static_cast<std::size_t>(spec.specimens) != 0 ||
-      spec.varied.empty() || spec.varied.back() != kSpecimenSeedKey)
+  const bool grouped = spec.specimens >= 1 && spec.specimens <= kMaxSpecimens &&
+                       spec.cases.size() % static_cast<std::size_t>(spec.specimens) == 0;
+  if (!grouped || spec.varied.empty() || spec.varied.back() != kSpecimenSeedKey)
     fail(std::to_string(spec.specimens) + " specimens do not group its " + std::to_string(spec.cases.size()) +
          " cases, or initial.seed is not its last varied key");
   for (std::size_t k = 0; k < spec.cases.size(); ++k) {
