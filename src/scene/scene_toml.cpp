@@ -702,6 +702,20 @@ void refuse_hysteresis_in_dynamic(const Scene& scene, TableReader& solver) {
                           "use newton or relax");
 }
 
+// The same loading branch holds in load steps only while every hinge and cell keeps bending or
+// shearing the way it began: one that the tool's travel straightens again would spring back
+// along it elastically, as no fabric with friction does.
+void refuse_hysteresis_in_load_steps(const Scene& scene) {
+  const bool bending = scene.bending.hysteresis_N.maxCoeff() > 0.0, shear = scene.shear.hysteresis_N_m > 0.0;
+  if (!bending && !shear) return;
+  for (const BodySpec& body : scene.bodies)
+    if (body.path.moves())
+      throw InputError(bending ? scene.bending.hysteresis_where : scene.shear.hysteresis_where,
+                       std::string(bending ? "bending" : "shear") + " friction is modelled on its loading branch from the flat "
+                           "start alone, and body '" + body.name + "' travels in load steps (" + said_at(body.steps_where) +
+                           "), in which a fabric that unbends would spring back along it: leave out one or the other");
+}
+
 // Seed 003's relaxation moves a node along its unbalanced force, which a stuck node has whatever
 // its history; friction needs the slip from where the node landed, which only newton and
 // dynamic carry.
@@ -760,6 +774,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
   refuse_friction_in_relax(scene, solver);
   refuse_wrapped_edges_in_dynamic(scene, solver);
   refuse_hysteresis_in_dynamic(scene, solver);
+  refuse_hysteresis_in_load_steps(scene);
   if (scene.clamp.on && scene.solver.name != "newton")
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only newton models, not " + scene.solver.name);

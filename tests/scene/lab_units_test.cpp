@@ -156,6 +156,22 @@ TEST_F(LabUnits, BendingHysteresisIsRefusedInDynamic) {
   EXPECT_NE(std::string(e.what()).find("loading branch"), std::string::npos) << e.what();
 }
 
+// In load steps a fabric the tool straightens again would spring back along the loading branch:
+// refused at the friction's key, naming the travelling body and where its steps were given.
+TEST_F(LabUnits, HysteresisIsRefusedInLoadSteps) {
+  dir.write("plate.obj", "v 0 0 -0.01\nv 0.2 0 -0.01\nv 0 0.2 -0.01\nf 1 2 3\n");
+  const std::string travelling = "[[body]]\nname = \"punch\"\nmesh = \"plate.obj\"\nunits = \"m\"\n[body.path]\nsteps = 4\n"
+                                 "translation_m = [0, 0, 0.01]\n";
+  for (const auto& [section, key] : {std::pair<std::string, std::string>{"[bending]\nrigidity_uNm = 7\n", "bending.hysteresis_gf_cm_cm = 0.05"},
+                                     {"[shear]\nrigidity_N_m = 40\n", "shear.hysteresis_gf_cm = 1.5"}}) {
+    const std::string name = key.substr(key.find('.') + 1);
+    const InputError e = error(scene("", section + name + "\n" + travelling));
+    EXPECT_EQ(e.where().key, key.substr(0, key.find(' '))) << e.what();
+    EXPECT_EQ(e.where().line, 10) << e.what();
+    EXPECT_NE(std::string(e.what()).find("body 'punch' travels in load steps (line 16)"), std::string::npos) << e.what();
+  }
+}
+
 // A square cell sheared by a small γ stores the continuum's G·γ²/2 per area through its two
 // diagonals; the warp and weft springs keep their length to second order and add only O(γ⁴).
 double shear_energy_J(const Model& model, double gamma) {
