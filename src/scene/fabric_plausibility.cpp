@@ -2,17 +2,22 @@
 
 #include <cstdio>
 
+#include "fabform/model/gravity.hpp"
+
 namespace fabform {
 
 // Apparel and technical fabrics weigh 15–1500 g/m² (chiffon to heavy canvas and glass cloth);
 // KES-FB2 bending rigidities run 0.002–10 gf·cm²/cm (0.2–1000 µN·m); small-strain tension per
 // width 10 N/m (a loose knit) to 5e6 N/m (a glass or carbon weave); KES-FB1 shear rigidity
-// 0.05–30 gf/cm/° (3–1700 N/m). Each range is widened by a factor past these so that only a
+// 0.05–30 gf/cm/° (3–1700 N/m); KES-FB2's bending hysteresis 2HB 0.002–2 gf·cm/cm and KES-FB1's
+// shear hysteresis 2HG 0.05–15 gf/cm (a sheer silk to a stiff cotton canvas). Each range is widened by a factor past these so that only a
 // value no fabric has, most often a unit slip of 1000 or 1e6, is flagged.
 PlausibleRange areal_mass_range() { return {5e-3, 3.0, 1e3, "g/m²"}; }
 PlausibleRange rigidity_range() { return {5e-8, 5e-3, 1e6, "µN·m"}; }
 PlausibleRange tensile_range() { return {2.0, 2e7, 1.0, "N/m"}; }
 PlausibleRange shear_rigidity_range() { return {0.5, 1e4, 1.0, "N/m per radian"}; }
+PlausibleRange bending_hysteresis_range() { return {5e-4 * kNewtonsPerGramForce, 20.0 * kNewtonsPerGramForce, 1.0 / kNewtonsPerGramForce, "gf·cm/cm"}; }
+PlausibleRange shear_hysteresis_range() { return {0.01 * kNewtonsPerGramForce / 0.01, 100.0 * kNewtonsPerGramForce / 0.01, 0.01 / kNewtonsPerGramForce, "gf/cm"}; }
 
 namespace {
 
@@ -36,6 +41,9 @@ std::vector<std::string> plausibility_warnings(const FabricValues& values) {
   check(values.tensile_warp_N_m, "the warp's small-strain tension per width per strain", tensile_range(), &warnings);
   check(values.tensile_weft_N_m, "the weft's small-strain tension per width per strain", tensile_range(), &warnings);
   check(values.shear_rigidity_N_m, "the shear rigidity G", shear_rigidity_range(), &warnings);
+  check(values.bending_hysteresis_warp_N, "the warp's bending hysteresis 2HB", bending_hysteresis_range(), &warnings);
+  check(values.bending_hysteresis_weft_N, "the weft's bending hysteresis 2HB", bending_hysteresis_range(), &warnings);
+  check(values.shear_hysteresis_N_m, "the shear hysteresis 2HG", shear_hysteresis_range(), &warnings);
   return warnings;
 }
 

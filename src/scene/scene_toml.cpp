@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "fabform/model/clamp_frame.hpp"
+#include "fabform/model/gravity.hpp"
 #include "fabform/model/wind.hpp"
 #include "fabform/solver/grid_continuation.hpp"
 #include "fabform/solver/solver_registry.hpp"
@@ -182,9 +183,6 @@ void read_fabric(TableReader& r, Scene* scene) {
     r.reject_unknown({"shape", "diameter_m", "mesh", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
                      "areal_mass_g_m2", "compression"});
 }
-
-// KES-FB1 gives G in gf/(cm·degree); fabform works in N/m per radian.
-constexpr double kNewtonsPerGramForce = kStandardGravity_m_s2 * 1e-3;  // a gram-force, by definition
 
 // A KES hysteresis is given in the lab's unit or in SI, not both; its rounding only with it.
 // Returns the key that gives it, or "" for none.

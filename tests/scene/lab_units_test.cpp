@@ -305,5 +305,23 @@ TEST_F(LabUnits, ValuesNoFabricHasAreWarnedWithTheRange) {
   EXPECT_TRUE(build(scene("areal_mass_g_m2 = 200\n", "[bending]\nrigidity_uNm = 7\n[gravity]\n")).read_warnings.empty());
 }
 
+// Two unit slips: 2HB 0.05 gf·cm/cm typed in N·m/m (4.9e-4) into the lab's key, 2HG 1.5 gf/cm typed
+// per metre (150 gf/m).
+TEST_F(LabUnits, HysteresisNoFabricHasIsWarnedWithTheRange) {
+  const Model slipped = build(scene("", "[bending]\nrigidity_uNm = 7\nhysteresis_gf_cm_cm = [4.9e-4, 0.05]\n"
+                                        "[shear]\nrigidity_N_m = 40\nhysteresis_gf_cm = 150\n"));
+  ASSERT_EQ(slipped.read_warnings.size(), 2u);
+  EXPECT_NE(slipped.read_warnings[0].find(":10: bending.hysteresis_gf_cm_cm: the warp's bending hysteresis 2HB 0.00049 "
+                                          "gf·cm/cm lies outside the range of real fabrics, 0.0005 to 20 gf·cm/cm"),
+            std::string::npos)
+      << slipped.read_warnings[0];
+  EXPECT_NE(slipped.read_warnings[1].find(":13: shear.hysteresis_gf_cm: the shear hysteresis 2HG 150 gf/cm lies "
+                                          "outside the range of real fabrics, 0.01 to 100 gf/cm"),
+            std::string::npos)
+      << slipped.read_warnings[1];
+  EXPECT_TRUE(build(scene("", "[bending]\nrigidity_uNm = 7\nhysteresis_gf_cm_cm = 0.05\n[shear]\nrigidity_N_m = 40\n"
+                              "hysteresis_gf_cm = 1.5\n")).read_warnings.empty());
+}
+
 }  // namespace
 }  // namespace fabform

@@ -14,6 +14,8 @@ namespace fabform {
 
 /// Standard gravity (m/s²), the default of a scene's [gravity].
 constexpr double kStandardGravity_m_s2 = 9.80665;
+/// A gram-force in newtons, by definition: the unit of the lab's gf·cm/cm and gf/cm.
+constexpr double kNewtonsPerGramForce = kStandardGravity_m_s2 * 1e-3;
 
 /// The weight of each node, along −z: areal density × the node's area × g.
 std::vector<Eigen::Vector3d> gravity_loads(const Fabric& grid, double areal_density_kg_m2,

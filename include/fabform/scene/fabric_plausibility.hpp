@@ -23,6 +23,8 @@ struct FabricValues {
   std::optional<GivenValue> rigidity_warp_Nm, rigidity_weft_Nm;  // hinges' flexural rigidity
   std::optional<GivenValue> tensile_warp_N_m, tensile_weft_N_m;   // the tables' small-strain slope
   std::optional<GivenValue> shear_rigidity_N_m;                  // G, N/m per radian
+  std::optional<GivenValue> bending_hysteresis_warp_N, bending_hysteresis_weft_N;  // 2HB, N·m/m
+  std::optional<GivenValue> shear_hysteresis_N_m;                                   // 2HG, N/m
 };
 
 /// The range real fabrics span, from gossamer silk to heavy technical cloth (README, "Lab units").
@@ -35,6 +37,8 @@ PlausibleRange areal_mass_range();
 PlausibleRange rigidity_range();
 PlausibleRange tensile_range();
 PlausibleRange shear_rigidity_range();
+PlausibleRange bending_hysteresis_range();
+PlausibleRange shear_hysteresis_range();
 
 /// One line per value outside its range: where it was given, the value and the range.
 std::vector<std::string> plausibility_warnings(const FabricValues& values);
