@@ -13,7 +13,7 @@ What it writes (from the repository root):
       springs take their compression response from the first slope); the fabric's areal density
   studies/cusick_measured.toml   one case a fabric on scenes/cusick_woven.toml: its tables, areal
       mass (g/m^2), flexural rigidity per direction (bending / 1000 uN.m: 1 g.mm^2/s^2 = 1e-9 N.m)
-      and shear rigidity G (shear / 1000 N/m), four specimens each
+      and shear rigidity G (shear / 1000 N/m), four specimens each, at 120 divisions
 
 Usage: /usr/bin/python3 tools/derive_petrak2025.py [--check]   (--check: exit 1 if a file is stale;
 exit 2 on a usage error or a malformed fabrics.csv, one line naming its line, nothing written)
@@ -69,7 +69,8 @@ def table(fabric, direction):
 def study(rows):
     lines = [
         "# Petrak et al. 2025's six woven fabrics (materials/petrak2025/fabrics.csv) on the Cusick tester",
-        "# (scenes/cusick_woven.toml), four specimens each: fabform's drape coefficients, to compare with",
+        "# (scenes/cusick_woven.toml), four specimens each at 120 divisions (2.5 mm), where their drapes",
+        "# settle (the scene's 40 do not: README, \"Drape\"): fabform's drape coefficients, to compare with",
         "# the measured ones (tools/drape_against_measured.py DIR). Written by tools/derive_petrak2025.py.",
         "",
         "[study]",
@@ -78,6 +79,9 @@ def study(rows):
         'description = "drape coefficients of six woven fabrics with measured Cusick drapes"',
         'figures = ["drape_coefficient", "drape.folds"]',
         "specimens = 4",
+        "",
+        "[study.set]",
+        '"fabric.divisions" = 120',
     ]
     for fabric in rows:
         lines += [
