@@ -16,8 +16,12 @@ PlausibleRange areal_mass_range() { return {5e-3, 3.0, 1e3, "g/m²"}; }
 PlausibleRange rigidity_range() { return {5e-8, 5e-3, 1e6, "µN·m"}; }
 PlausibleRange tensile_range() { return {2.0, 2e7, 1.0, "N/m"}; }
 PlausibleRange shear_rigidity_range() { return {0.5, 1e4, 1.0, "N/m per radian"}; }
-PlausibleRange bending_hysteresis_range() { return {5e-4 * kNewtonsPerGramForce, 20.0 * kNewtonsPerGramForce, 1.0 / kNewtonsPerGramForce, "gf·cm/cm"}; }
-PlausibleRange shear_hysteresis_range() { return {0.01 * kNewtonsPerGramForce / 0.01, 100.0 * kNewtonsPerGramForce / 0.01, 0.01 / kNewtonsPerGramForce, "gf/cm"}; }
+PlausibleRange bending_hysteresis_range() {
+  return {5e-4 * kNewtonsPerGramForce, 20.0 * kNewtonsPerGramForce, 1.0 / kNewtonsPerGramForce, "gf·cm/cm"};
+}
+PlausibleRange shear_hysteresis_range() {
+  return {0.01 * kGramForcePerCentimetre_N_m, 100.0 * kGramForcePerCentimetre_N_m, 1.0 / kGramForcePerCentimetre_N_m, "gf/cm"};
+}
 
 namespace {
 

@@ -337,10 +337,10 @@ FabricValues fabric_values(const Scene& scene, const Model& model, const std::op
     const bool both_ways = !model.shear->tension_only() || model.shear->compression() != Compression::none;
     if (k > 0.0) v.shear_rigidity_N_m = GivenValue{both_ways ? k / 2 : k / 4, {scene.shear.material_path, 0, ""}};
   }
-  if (const Eigen::Vector2d& hb = scene.bending.hysteresis_N; hb.maxCoeff() > 0.0) {
-    v.bending_hysteresis_warp_N = GivenValue{hb.x(), scene.bending.hysteresis_where};
-    v.bending_hysteresis_weft_N = GivenValue{hb.y(), scene.bending.hysteresis_where};
-  }
+  // A direction given 2HB = 0 has no friction to check.
+  const Eigen::Vector2d& hb = scene.bending.hysteresis_N;
+  if (hb.x() > 0.0) v.bending_hysteresis_warp_N = GivenValue{hb.x(), scene.bending.hysteresis_where};
+  if (hb.y() > 0.0) v.bending_hysteresis_weft_N = GivenValue{hb.y(), scene.bending.hysteresis_where};
   if (scene.shear.hysteresis_N_m > 0.0)
     v.shear_hysteresis_N_m = GivenValue{scene.shear.hysteresis_N_m, scene.shear.hysteresis_where};
   return v;

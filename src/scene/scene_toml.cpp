@@ -207,9 +207,9 @@ void read_shear_hysteresis(TableReader& r, Scene* scene) {
                             "rectangular cells only: use mesh = \"quadrangular\" or \"triangular\", not \"") +
                     to_string(mesh) + "\"");
   const double value = r.number(key, 0.0, true);
-  const double cap = in_gf ? 1e3 : 1e3 * kNewtonsPerGramForce / 0.01;
+  const double cap = in_gf ? 1e3 : 1e3 * kGramForcePerCentimetre_N_m;
   if (!(value > 0.0 && value <= cap)) r.fail(key, in_gf ? "must be in (0, 1000] gf/cm" : "must be in (0, 980.665] N/m");
-  s.hysteresis_N_m = in_gf ? value * kNewtonsPerGramForce / 0.01 : value;
+  s.hysteresis_N_m = in_gf ? value * kGramForcePerCentimetre_N_m : value;
   s.hysteresis_where = r.locate_key(key);
   const double rounding_deg = r.number("hysteresis_rounding_deg", s.hysteresis_rounding_rad / kRadiansPerDegree);
   // At 1e-4° the stick is already a shear rigidity HG/γ₀ of 2.9e5 × 2HG per radian.
@@ -232,7 +232,8 @@ void read_shear(TableReader r, Scene* scene) {
   } else {
     const std::string key = r.has("rigidity_N_m") ? "rigidity_N_m" : "rigidity_gf_cm_deg";
     const double value = r.number(key, 0.0, true);
-    s.rigidity_N_m = key == "rigidity_N_m" ? value : value * kNewtonsPerGramForce / 0.01 / kRadiansPerDegree;
+    // KES-FB1 gives G in gf/(cm·degree); fabform works in N/m per radian.
+    s.rigidity_N_m = key == "rigidity_N_m" ? value : value * kGramForcePerCentimetre_N_m / kRadiansPerDegree;
     if (!(s.rigidity_N_m > 0.0 && s.rigidity_N_m <= 1e9)) r.fail(key, "must be positive, at most 1e9 N/m");
     s.rigidity_where = r.locate_key(key);
   }
@@ -711,7 +712,7 @@ void refuse_hysteresis_in_load_steps(const Scene& scene) {
       throw InputError(bending ? scene.bending.hysteresis_where : scene.shear.hysteresis_where,
                        std::string(bending ? "bending" : "shear") + " friction is modelled on its loading branch from the flat "
                            "start alone, and body '" + body.name + "' travels in load steps (" + said_at(body.steps_where) +
-                           "), in which a fabric that unbends would spring back along it: leave out one or the other");
+                           "), in which a fabric that unbends would spring back along it: leave out the friction or the body's path");
 }
 
 // Seed 003's relaxation moves a node along its unbalanced force, which a stuck node has whatever

@@ -321,6 +321,8 @@ TEST_F(LabUnits, HysteresisNoFabricHasIsWarnedWithTheRange) {
       << slipped.read_warnings[1];
   EXPECT_TRUE(build(scene("", "[bending]\nrigidity_uNm = 7\nhysteresis_gf_cm_cm = 0.05\n[shear]\nrigidity_N_m = 40\n"
                               "hysteresis_gf_cm = 1.5\n")).read_warnings.empty());
+  // A direction without friction (2HB = 0) is not a value to check.
+  EXPECT_TRUE(build(scene("", "[bending]\nrigidity_uNm = 7\nhysteresis_gf_cm_cm = [0.05, 0]\n")).read_warnings.empty());
 }
 
 }  // namespace

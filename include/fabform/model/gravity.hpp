@@ -14,8 +14,10 @@ namespace fabform {
 
 /// Standard gravity (m/s²), the default of a scene's [gravity].
 constexpr double kStandardGravity_m_s2 = 9.80665;
-/// A gram-force in newtons, by definition: the unit of the lab's gf·cm/cm and gf/cm.
+/// A gram-force in newtons, by definition: KES-FB's unit of force (2HB in gf·cm/cm = gf).
 constexpr double kNewtonsPerGramForce = kStandardGravity_m_s2 * 1e-3;
+/// KES-FB's force per width, gf/cm (2HG, and G per degree), in N/m.
+constexpr double kGramForcePerCentimetre_N_m = kNewtonsPerGramForce / 0.01;
 
 /// The weight of each node, along −z: areal density × the node's area × g.
 std::vector<Eigen::Vector3d> gravity_loads(const Fabric& grid, double areal_density_kg_m2,
