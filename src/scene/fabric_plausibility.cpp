@@ -10,8 +10,9 @@ namespace fabform {
 // KES-FB2 bending rigidities run 0.002–10 gf·cm²/cm (0.2–1000 µN·m); small-strain tension per
 // width 10 N/m (a loose knit) to 5e6 N/m (a glass or carbon weave); KES-FB1 shear rigidity
 // 0.05–30 gf/cm/° (3–1700 N/m); KES-FB2's bending hysteresis 2HB 0.002–2 gf·cm/cm and KES-FB1's
-// shear hysteresis 2HG 0.05–15 gf/cm (a sheer silk to a stiff cotton canvas). Each range is widened by a factor past these so that only a
-// value no fabric has, most often a unit slip of 1000 or 1e6, is flagged.
+// shear hysteresis 2HG 0.05–15 gf/cm (a sheer silk to a stiff cotton canvas). Each range is
+// widened by a factor past these so that only a value no fabric has, most often a unit slip of
+// 1000 or 1e6, is flagged.
 PlausibleRange areal_mass_range() { return {5e-3, 3.0, 1e3, "g/m²"}; }
 PlausibleRange rigidity_range() { return {5e-8, 5e-3, 1e6, "µN·m"}; }
 PlausibleRange tensile_range() { return {2.0, 2e7, 1.0, "N/m"}; }

@@ -27,11 +27,13 @@ namespace {
 
 // ---------------------------------------------------------------------------------------------
 // The valid scene every case starts from: every key of the format, written once, with the
-// repository's material tables and dome mold. Four variants, as some keys depend on others:
+// repository's material tables and dome mold. Six variants, as some keys depend on others:
 // the initial shape's on the shape, lift (height_m) or wrap (axis_m, radius_m, facing_deg,
 // span_deg); the fabric's on its outline, a rectangle or a circle meshed as a lattice (circle),
 // as rings on spokes (arc) or as a jittered lattice (jittered, the circle's scene with its mesh
-// and jitter). The circles also hold the drape test's force terms and [drape].
+// and jitter); a body's path on load steps, which the rectangles' friction in bending and shear
+// refuses (travel, lift's scene with the path and without that friction). The circles also hold
+// the drape test's force terms and [drape].
 
 enum class Base { lift, wrap, circle, arc, jittered, travel };
 
@@ -344,7 +346,7 @@ const std::vector<KeyRow>& key_table() {
        {{"cap", "10.0", A, kSame}, {"beyond_cap", "10.1", R, kSame}}},
       {"body.0.wrap_edges_deg",          T::number,    lift, A,   R,  A,   R,   _,    "",
        {{"right_angle", "90.0", A, kSame}, {"half_turn", "180.0", R, kSame}}},
-      // The body travels 4 mm and turns 10° in four load steps (travelling); without a path it stays put.
+      // The body travels 4 mm and turns 10° in four load steps; without a path it stays put.
       {"body.0.path",                    T::only_extras, travel, _, _,  _,   _,   _,    "",
        {{"missing", kRemove, A, kSame}}},
       {"body.0.path.steps",              T::integer,   travel, R,   R,  R,   R,   _,    "",
