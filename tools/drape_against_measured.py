@@ -24,12 +24,6 @@ from commented_csv import Malformed, read_rows  # noqa: E402
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 MEASURED = ROOT / "materials" / "petrak2025" / "fabrics.csv"
 FABRIC_OF_WARP = re.compile(r"petrak2025/(\w+)_warp\.csv$")
-
-
-class InputError(Exception):
-    pass
-
-
 SUMMARY_COLUMNS = ("fabric.warp", "specimens", "converged", "drape_coefficient mean", "drape_coefficient sd",
                    "drape.folds mean")
 MEASURED_COLUMNS = ("id", "composition", "areal_mass_g_m2", "measured_dc", "clo3d_dc")
@@ -39,7 +33,7 @@ def number(text, path, line, what):
     try:
         return float(text)
     except (TypeError, ValueError):
-        raise InputError("%s:%d: %s is not a number: %r" % (path, line, what, text))
+        raise Malformed("%s:%d: %s is not a number: %r" % (path, line, what, text))
 
 
 def comparison(study_dir):
@@ -53,13 +47,13 @@ def comparison(study_dir):
     for line, row in rows:
         match = FABRIC_OF_WARP.search(row.get("fabric.warp") or "")
         if not match or match.group(1) not in measured:
-            raise InputError("%s:%d: a case that is none of %s's fabrics" % (summary, line, MEASURED.name))
+            raise Malformed("%s:%d: a case that is none of %s's fabrics" % (summary, line, MEASURED.name))
         fabric = measured[match.group(1)]
         if fabric["id"] in seen:
-            raise InputError("%s:%d: %s a second time: one case a fabric" % (summary, line, fabric["id"]))
+            raise Malformed("%s:%d: %s a second time: one case a fabric" % (summary, line, fabric["id"]))
         seen.add(fabric["id"])
         if not row.get("drape_coefficient mean"):
-            raise InputError("%s:%d: no converged specimen of %s" % (summary, line, fabric["id"]))
+            raise Malformed("%s:%d: no converged specimen of %s" % (summary, line, fabric["id"]))
         mean = 100 * number(row["drape_coefficient mean"], summary, line, "drape_coefficient mean")
         sd = row.get("drape_coefficient sd") or ""
         real = 100 * number(fabric["measured_dc"], MEASURED, 0, "measured_dc")
@@ -84,7 +78,7 @@ def main(argv):
     try:
         text = comparison(study_dir)
         (study_dir / "against_measured.md").write_text(text)
-    except (InputError, Malformed, csv.Error, OSError) as error:
+    except (Malformed, csv.Error, OSError) as error:
         print("drape_against_measured: %s" % error, file=sys.stderr)
         return 2
     print(text, end="")

@@ -689,15 +689,26 @@ std::string said_at(const SourceLocation& where) {
   return where.line > 0 ? "line " + std::to_string(where.line) : std::string("from the command line");
 }
 
+// The friction in bending or shear a scene has (bending's first when both), and where it was given.
+struct GivenHysteresis {
+  std::string section;  // "bending" or "shear"; empty: none
+  SourceLocation where;
+};
+
+GivenHysteresis given_hysteresis(const Scene& scene) {
+  if (scene.bending.hysteresis_N.maxCoeff() > 0.0) return {"bending", scene.bending.hysteresis_where};
+  if (scene.shear.hysteresis_N_m > 0.0) return {"shear", scene.shear.hysteresis_where};
+  return {};
+}
+
 // Friction in bending or shear is modelled on the KES loops' loading branch alone: a fabric
 // swinging back along it, as dynamic's would, would unbend or unshear elastically.
 void refuse_hysteresis_in_dynamic(const Scene& scene, TableReader& solver) {
   if (scene.solver.name != "dynamic") return;
-  const bool bending = scene.bending.hysteresis_N.maxCoeff() > 0.0, shear = scene.shear.hysteresis_N_m > 0.0;
-  if (!bending && !shear) return;
-  const std::string section = bending ? "bending" : "shear";
-  solver.fail("name", "the scene has " + section + " friction (" +
-                          said_at(bending ? scene.bending.hysteresis_where : scene.shear.hysteresis_where) + "), modelled on its loading branch alone, from which dynamic's fabric would spring back: "
+  const GivenHysteresis friction = given_hysteresis(scene);
+  if (friction.section.empty()) return;
+  solver.fail("name", "the scene has " + friction.section + " friction (" + said_at(friction.where) +
+                          "), modelled on its loading branch alone, from which dynamic's fabric would spring back: "
                           "use newton or relax");
 }
 
@@ -705,14 +716,14 @@ void refuse_hysteresis_in_dynamic(const Scene& scene, TableReader& solver) {
 // shearing the way it began: one that the tool's travel straightens again would spring back
 // along it elastically, as no fabric with friction does.
 void refuse_hysteresis_in_load_steps(const Scene& scene) {
-  const bool bending = scene.bending.hysteresis_N.maxCoeff() > 0.0, shear = scene.shear.hysteresis_N_m > 0.0;
-  if (!bending && !shear) return;
+  const GivenHysteresis friction = given_hysteresis(scene);
+  if (friction.section.empty()) return;
   for (const BodySpec& body : scene.bodies)
     if (body.path.moves())
-      throw InputError(bending ? scene.bending.hysteresis_where : scene.shear.hysteresis_where,
-                       std::string(bending ? "bending" : "shear") + " friction is modelled on its loading branch from the flat "
-                           "start alone, and body '" + body.name + "' travels in load steps (" + said_at(body.steps_where) +
-                           "), in which a fabric that unbends would spring back along it: leave out the friction or the body's path");
+      throw InputError(friction.where, friction.section + " friction is modelled on its loading branch from the flat "
+                                           "start alone, and body '" + body.name + "' travels in load steps (" +
+                                           said_at(body.steps_where) + "), in which a fabric that unbends would spring "
+                                           "back along it: leave out the friction or the body's path");
 }
 
 // Seed 003's relaxation moves a node along its unbalanced force, which a stuck node has whatever
