@@ -226,12 +226,15 @@ int run(const RunArguments& args) {
   RunMonitor monitor(state, so_far, scene.checkpoint, publish, args.quiet ? nullptr : &progress);
   const InterruptHandlers handlers;
   const IterationObserver observe = [&](const IterationRecord& r) { monitor.observe(r); };
-  // A finished load step is kept (replacing the one a resumed run finished again) and
-  // checkpointed, so that the run goes on from the next step.
-  const StepObserver step_done = [&](int step, const SolverState& s, const Summary& of_step) {
+  // A finished load step is kept (replacing the one a resumed run finished again, whose cuts it
+  // keeps: finished again from its own rest, it is not cut again) and checkpointed, so that the
+  // run goes on from the next step.
+  const StepObserver step_done = [&](int step, const SolverState& s, const Summary& of_step, StepCuts cuts) {
     const EquilibriumReport check = measure_equilibrium(model, s.x, kContactTolerance_m, scene.solver.tolerance_N());
-    StepResult result =
-        step_result(RunRecord{scene, model, s, of_step, check, inputs, {}, 0.0, scene.solver.threads, huge_pages}, step);
+    for (const StepResult& before : finished_steps)
+      if (before.step == step && cuts.cuts == 0) cuts = before.cuts;
+    StepResult result = step_result(
+        RunRecord{scene, model, s, of_step, check, inputs, {}, 0.0, scene.solver.threads, huge_pages}, step, cuts);
     finished_steps.erase(std::remove_if(finished_steps.begin(), finished_steps.end(),
                                         [&](const StepResult& r) { return r.step >= step; }),
                          finished_steps.end());

@@ -14,12 +14,18 @@ Eigen::Vector3d ToolPath::rotation_deg_at(int step) const {
   return rotation_deg * (static_cast<double>(step) / steps);
 }
 
-Eigen::Isometry3d ToolPath::pose(int step) const {
+Eigen::Isometry3d ToolPath::pose(int step) const { return pose_at(static_cast<double>(step)); }
+
+// translation_at and rotation_deg_at's arithmetic, so that a whole progress gives pose(int)'s bits.
+Eigen::Isometry3d ToolPath::pose_at(double progress) const {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  if (step == 0 || !moves()) return pose;
-  const Eigen::Matrix3d turn = rotation_from_degrees(rotation_deg_at(step));
+  if (progress == 0.0 || !moves()) return pose;
+  const double part = progress / steps;
+  const Eigen::Vector3d moved = translation_m * part;
+  const Eigen::Vector3d turned = rotation_deg * part;
+  const Eigen::Matrix3d turn = rotation_from_degrees(turned);
   pose.linear() = turn;
-  pose.translation() = pivot_m - turn * pivot_m + translation_at(step);
+  pose.translation() = pivot_m - turn * pivot_m + moved;
   return pose;
 }
 

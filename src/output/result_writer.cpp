@@ -472,7 +472,7 @@ void write_results(const std::string& dir, const RunRecord& run) {
   publish_results(dir, made_at_once(makers, run.model.node_count()));
 }
 
-StepResult step_result(const RunRecord& run, int step) {
+StepResult step_result(const RunRecord& run, int step, const StepCuts& cuts) {
   const Summary& s = run.summary;
   const StateFigures state = state_figures(run);
   const FabricFigures& f = state.fabric;
@@ -487,6 +487,8 @@ StepResult step_result(const RunRecord& run, int step) {
                             {"travel", travel},
                             {"converged", s.converged()},
                             {"iterations", s.iterations},
+                            {"cuts", cuts.cuts},
+                            {"smallest_fraction", cuts.smallest_fraction},
                             {"residual_N", number(s.residual_N)},
                             {"seconds", s.seconds},
                             {"contact_nodes", run.check.contact_nodes},
@@ -499,7 +501,7 @@ StepResult step_result(const RunRecord& run, int step) {
                             {"stuck_nodes", run.check.stuck_nodes},
                             {"fabric_file", step_file("fabric", step)},
                             {"bodies_file", step_file("bodies", step)}};
-  return {step, j.dump(), fabric_vtp(run, state), bodies_vtp(run.model)};
+  return {step, cuts, j.dump(), fabric_vtp(run, state), bodies_vtp(run.model)};
 }
 
 namespace {
@@ -522,7 +524,8 @@ std::vector<StepResult> read_step_results(const std::string& dir) {
     if (!j.contains("steps")) return steps;
     for (const nlohmann::json& step : j.at("steps")) {
       const int k = step.at("step").get<int>();
-      steps.push_back({k, step.dump(), read_whole(fs::path(dir) / step_file("fabric", k)),
+      const StepCuts cuts{step.value("cuts", 0), step.value("smallest_fraction", 1.0)};  // a folder from before cuts has none
+      steps.push_back({k, cuts, step.dump(), read_whole(fs::path(dir) / step_file("fabric", k)),
                        read_whole(fs::path(dir) / step_file("bodies", k))});
     }
   } catch (const nlohmann::json::exception& error) {

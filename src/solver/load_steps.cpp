@@ -1,14 +1,21 @@
 #include "fabform/solver/load_steps.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "fabform/geometry/nearby_queries.hpp"
 
 namespace fabform {
 namespace {
+
+// A part of 1/2^20 of a step is about a millionth of it: further cuts would be a step too long
+// for the model rather than for the solver.
+constexpr int kMaxStepCuts = 20;
 
 Eigen::Vector3d keep_locked(Eigen::Vector3d point, const Eigen::Vector3d& held, AxisMask locks) {
   for (int axis = 0; axis < 3; ++axis)
@@ -50,6 +57,20 @@ void put_overlapped_on_surface(const Model& model, SolverState& state) {
   }
 }
 
+// Whether a node resting on a travelling body lies inside it by more than rounding explains (a
+// thousand times the distance within which a point lies on its surface): the state was solved
+// with the body standing elsewhere.
+bool resting_nodes_inside(const Model& model, const SolverState& state) {
+  for (int k = 0; k < model.node_count(); ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const int b = state.contact[i].body;
+    if (b < 0 || static_cast<std::size_t>(b) >= model.paths.size() || !model.paths[b].moves()) continue;
+    const RigidBody& body = model.bodies[static_cast<std::size_t>(b)];
+    if (body.closest(state.x[i]).signed_distance < -1000.0 * body.on_surface_distance()) return true;
+  }
+  return false;
+}
+
 // The summary a step's solver starts from: the step's own records when the run resumes inside
 // it, else none, with the seconds of the steps before so that time runs on.
 Summary step_start(const std::vector<IterationRecord>& history, int step, double seconds_before) {
@@ -71,50 +92,238 @@ std::string step_message(int step, int steps, const Summary& s) {
 
 }  // namespace
 
-void begin_load_step(Model& model, SolverState& state, int step) {
+void begin_load_step(Model& model, SolverState& state, double from, double to) {
   for (std::size_t b = 0; b < model.paths.size(); ++b) {
     const ToolPath& path = model.paths[b];
     if (!path.moves()) continue;
-    const Eigen::Isometry3d to = path.pose(step);
-    carry_resting_nodes(model, state, static_cast<int>(b), to * path.pose(step - 1).inverse());
-    model.bodies[b].move_to(to);
+    const Eigen::Isometry3d pose = path.pose_at(to);
+    carry_resting_nodes(model, state, static_cast<int>(b), pose * path.pose_at(from).inverse());
+    model.bodies[b].move_to(pose);
   }
   put_overlapped_on_surface(model, state);
   state.velocity.clear();  // each step starts from rest
 }
 
+void begin_load_step(Model& model, SolverState& state, int step) {
+  begin_load_step(model, state, static_cast<double>(step - 1), static_cast<double>(step));
+}
+
+namespace {
+
+// One load step, solved whole or, when that fails, in parts cut in half (load_steps.hpp). Its
+// attempts add their records to the run's history (all with step = k) and their figures to the
+// run's summary as they end.
+class LoadStep {
+ public:
+  LoadStep(Model& model, SolverState& state, const SolverSpec& spec, const IterationObserver& observer, Summary& run,
+           int step, int steps)
+      : model_(model), state_(state), spec_(spec), observer_(observer), run_(run), step_(step), steps_(steps),
+        cap_(solver_named(spec.name).stop_settings(spec).max_iterations) {}
+
+  // Solves the step; `resumed`: the run goes on inside it from a checkpoint, the bodies and the
+  // state already at its whole pose. Returns whether it converged; if not, the run's summary says
+  // why.
+  bool solve(bool resumed) {
+    Bodies bodies_at_start = bodies();
+    SolverState at_start;
+    if (!resumed) {
+      if (spec_.max_step_cuts > 0) at_start = state_;  // a copy only when it may be needed
+      begin_load_step(model_, state_, step_);
+    }
+    // The first attempt is the step as it always was solved: the same start, the same cap.
+    Summary start = step_start(run_.history, step_, run_.seconds);
+    // Resumed with the step's records past the cap, the step had been cut when the checkpoint
+    // was written: at its end (its rest, which re-finishes at once: it is given one iteration
+    // beyond them, for a position check) or inside a cut, at a state solved for a fractional
+    // pose, which a checkpoint cannot resume (limitation). Such a state shows as nodes resting
+    // inside the body now at the whole pose, or as a state that does not re-finish at once.
+    const bool cut_before = resumed && spec_.max_step_cuts > 0 && start.iterations >= cap_;
+    if (cut_before && resting_nodes_inside(model_, state_)) return refuse_inside_cut(start);
+    const Summary whole =
+        cut_before ? attempt(capped(start.iterations + 1LL), std::move(start)) : attempt(spec_, std::move(start));
+    if (whole.converged()) return true;
+    if (whole.termination != Termination::not_converged || spec_.max_step_cuts == 0) return false;
+    if (cut_before) return refuse_inside_cut(run_);
+    if (resumed) {
+      // Limitation: a checkpoint holds no state from before the step began, so there is nothing
+      // to cut back to.
+      run_.message += "; the run was resumed inside this step from a checkpoint, from which it cannot be cut "
+                      "(a cut goes back to the step's start, which a checkpoint does not hold): run the scene "
+                      "again without --resume to let the step be cut";
+      return false;
+    }
+    restore(at_start, bodies_at_start);
+    ++cuts_.cuts;
+    const double from = step_ - 1.0;
+    const double half = from + 0.5;
+    if (solve_part(from, half, 1) && solve_part(half, step_, 1)) return true;
+    if (run_.termination == Termination::numerical_failure)
+      run_.message += " (while the step was being cut: in its part from progress " + progress(failed_from_) +
+                      " to " + progress(failed_to_) + ")";
+    if (run_.termination == Termination::interrupted) {
+      // A state inside a cut is at no whole pose, which is all a checkpoint can resume from: the
+      // run goes back to where the step began, and --resume solves the step again from there,
+      // as the uninterrupted run did.
+      restore(at_start, bodies_at_start);
+      forget_step();
+      run_.message += "; load step " + std::to_string(step_) + " was being cut: its records are dropped and the "
+                      "state kept is the one it began from, from which --resume solves it again";
+    }
+    return false;
+  }
+
+  const StepCuts& cuts() const { return cuts_; }
+  // The step's own summary: its last attempt's, with every attempt's records and iterations.
+  const Summary& summary() const { return last_; }
+
+ private:
+  using Bodies = std::vector<Eigen::Isometry3d>;
+
+  // Ends the run that resumed a checkpoint written inside a cut, `where` the summary it stands at.
+  bool refuse_inside_cut(const Summary& where) {
+    run_.termination = Termination::not_converged;
+    run_.converged_on = StopCriterion::none;
+    run_.residual_N = where.residual_N;
+    run_.message = "load step " + std::to_string(step_) + " of " + std::to_string(steps_) +
+                   ": the checkpoint was written while the step was being cut, and a cut step cannot be resumed "
+                   "inside its cuts: run the scene again without --resume";
+    return false;
+  }
+
+  // The spec with its cap at `cap` iterations of the step's count.
+  SolverSpec capped(long long cap) const {
+    SolverSpec spec = spec_;
+    spec.set_max_iterations(static_cast<int>(std::min<long long>(cap, std::numeric_limits<int>::max())));
+    return spec;
+  }
+
+  Bodies bodies() const {
+    Bodies poses;
+    for (const RigidBody& body : model_.bodies) poses.push_back(body.pose());
+    return poses;
+  }
+
+  void restore(const SolverState& state, const Bodies& poses) {
+    state_ = state;
+    for (std::size_t b = 0; b < poses.size(); ++b)
+      if (b < model_.paths.size() && model_.paths[b].moves()) model_.bodies[b].move_to(poses[b]);
+  }
+
+  // The part of the step from progress `from` to `to`, cut `depth` times, from the state where
+  // the last part left it; a part that fails is cut in half while depth < max_step_cuts.
+  bool solve_part(double from, double to, int depth) {
+    const Bodies bodies_before = bodies();
+    const SolverState before = state_;
+    begin_load_step(model_, state_, from, to);
+    // Its iterations count on within the step, and it has the whole cap of its own.
+    Summary start = step_start(run_.history, step_, run_.seconds);
+    start.seconds = run_.seconds;
+    const int counted = start.iterations;
+    const Summary done = attempt(capped(static_cast<long long>(counted) + cap_), std::move(start));
+    cuts_.smallest_fraction = std::min(cuts_.smallest_fraction, to - from);
+    if (done.converged()) return true;
+    failed_from_ = from, failed_to_ = to;
+    if (done.termination != Termination::not_converged) return false;  // interrupted or broken: not cut
+    if (depth >= spec_.max_step_cuts) {
+      run_.message = exhausted_message(done, done.iterations - counted >= cap_, from, to);
+      return false;
+    }
+    restore(before, bodies_before);
+    ++cuts_.cuts;
+    const double middle = from + 0.5 * (to - from);  // exact: the parts are powers of two of a step
+    return solve_part(from, middle, depth + 1) && solve_part(middle, to, depth + 1);
+  }
+
+  // Solves from `start` with `spec`, the records numbered within the step.
+  Summary attempt(const SolverSpec& spec, Summary start) {
+    run_.history.erase(std::remove_if(run_.history.begin(), run_.history.end(),
+                                      [&](const IterationRecord& r) { return r.step == step_; }),
+                       run_.history.end());
+    const Summary done = fabform::solve(model_, state_, spec, [&](IterationRecord r) {
+      r.step = step_;
+      if (observer_) observer_(r);
+    }, std::move(start));
+    for (IterationRecord r : done.history) r.step = step_, run_.history.push_back(r);
+    run_.iterations = total_iterations(run_.history);
+    run_.residual_N = done.residual_N;
+    run_.worst_node = done.worst_node;
+    run_.seconds = done.seconds;
+    run_.termination = done.termination;
+    run_.converged_on = done.converged_on;
+    run_.position_error_m = done.position_error_m;
+    run_.linear_solver = done.linear_solver;
+    run_.linear_iterations += done.linear_iterations;
+    run_.message = step_message(step_, steps_, done);
+    const long linear_iterations = last_.linear_iterations + done.linear_iterations;
+    last_ = done;
+    last_.linear_iterations = linear_iterations;
+    return done;
+  }
+
+  // The run goes back to the end of the step before: the step's records are dropped.
+  void forget_step() {
+    run_.history.erase(std::remove_if(run_.history.begin(), run_.history.end(),
+                                      [&](const IterationRecord& r) { return r.step == step_; }),
+                       run_.history.end());
+    run_.iterations = total_iterations(run_.history);
+    if (!run_.history.empty()) run_.residual_N = run_.history.back().residual_N;
+    run_.worst_node = -1;
+  }
+
+  static std::string progress(double at) {
+    std::ostringstream text;
+    text.precision(10);
+    text << at;
+    return text.str();
+  }
+
+  // Why the smallest part failed: its own cap reached (its iterations count on within the
+  // step, so the solver's message would give the count, not the cap), or its line search stalled.
+  std::string exhausted_message(const Summary& done, bool capped, double from, double to) const {
+    std::ostringstream text;
+    text << "load step " << step_ << " of " << steps_ << ": its cuts were exhausted (max_step_cuts = "
+         << spec_.max_step_cuts << "): the part of 1/" << (1LL << spec_.max_step_cuts) << " of the step from progress "
+         << progress(from) << " to " << progress(to) << " did not converge either: ";
+    text.precision(3);
+    if (capped)
+      text << "iteration cap " << cap_ << " reached with ||V||inf = " << done.residual_N << " N > e = "
+           << done.tolerance_N << " N (worst node " << done.worst_node << ")";
+    else
+      text << done.message;
+    return text.str();
+  }
+
+  Model& model_;
+  SolverState& state_;
+  const SolverSpec& spec_;
+  const IterationObserver& observer_;
+  Summary& run_;
+  const int step_;
+  const int steps_;
+  const int cap_;
+  StepCuts cuts_;
+  Summary last_;
+  double failed_from_ = 0.0;  // the part that failed last
+  double failed_to_ = 0.0;
+};
+
+}  // namespace
+
 Summary solve_in_steps(Model& model, SolverState& state, const SolverSpec& spec, const IterationObserver& observer,
                        const StepObserver& step_done, Summary resumed) {
   const int steps = model.load_steps();
   if (steps == 0) throw std::invalid_argument("solve_in_steps: no body travels");
+  if (spec.max_step_cuts < 0 || spec.max_step_cuts > kMaxStepCuts)
+    throw std::invalid_argument("solve_in_steps: max_step_cuts must be 0 ... " + std::to_string(kMaxStepCuts));
   Summary run = begin_summary(spec.name, spec.tolerance_N(), std::move(resumed), spec.tolerance_m());
   const int resumed_step = run.history.empty() ? 0 : run.history.back().step;
   // The bodies stand where the checkpoint's step put them; the state is already carried.
   for (std::size_t b = 0; b < model.paths.size() && resumed_step > 0; ++b)
     if (model.paths[b].moves()) model.bodies[b].move_to(model.paths[b].pose(resumed_step));
   for (int step = resumed_step > 0 ? resumed_step : 1; step <= steps; ++step) {
-    if (step != resumed_step) begin_load_step(model, state, step);
-    const Summary start = step_start(run.history, step, run.seconds);
-    run.history.erase(std::remove_if(run.history.begin(), run.history.end(),
-                                     [&](const IterationRecord& r) { return r.step == step; }),
-                      run.history.end());
-    const Summary done = solve(model, state, spec, [&](IterationRecord r) {
-      r.step = step;
-      if (observer) observer(r);
-    }, start);
-    for (IterationRecord r : done.history) r.step = step, run.history.push_back(r);
-    run.iterations = total_iterations(run.history);
-    run.residual_N = done.residual_N;
-    run.worst_node = done.worst_node;
-    run.seconds = done.seconds;
-    run.termination = done.termination;
-    run.converged_on = done.converged_on;
-    run.position_error_m = done.position_error_m;
-    run.linear_solver = done.linear_solver;
-    run.linear_iterations += done.linear_iterations;
-    run.message = step_message(step, steps, done);
-    if (!done.converged()) return run;
-    if (step_done) step_done(step, state, done);
+    LoadStep load_step(model, state, spec, observer, run, step, steps);
+    if (!load_step.solve(step == resumed_step)) return run;
+    if (step_done) step_done(step, state, load_step.summary(), load_step.cuts());
   }
   return run;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // A rigid forming body (a mold, a torso, a support disc): its placed triangle mesh, an Embree
 // BVH over it, and the pseudo-normals that tell inside from outside. All answers are double.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,10 @@ class RigidBody {
   /// (edge_wrap.hpp): a CAD part's sharp edges, or a fillet's facets when the angle is below
   /// theirs. Throws std::invalid_argument for an angle outside (0, 180).
   void wrap_edges_sharper_than(double angle_deg);
+  /// The body's convex edges whose two faces turn by at least `angle_deg`, in the placed frame
+  /// (move them by pose()), with the edges along a CAD tessellation's cracks, whose second face
+  /// meets them in T-junctions. Throws std::invalid_argument for an angle outside (0, 180).
+  std::vector<SharpEdge> convex_edges(double angle_deg) const;
   /// The angle springs wrap edges from; 0 when they wrap none (contact is the nodes' alone).
   double wrap_angle_deg() const { return wrap_angle_deg_; }
   /// How many edges springs may wrap.
@@ -101,6 +106,8 @@ class RigidBody {
 
  private:
   void compute_normals();
+  void visit_convex_edges(double angle_deg, const std::function<void(const SharpEdge&, int, int)>& visit) const;
+  void add_crack_edges(double cos_limit, std::vector<SharpEdge>& edges) const;
   void compute_edge_normals();
   void set_edge(const EdgeCorner* first, const EdgeCorner* last);
   Eigen::Vector3d feature_normal(int triangle, TriangleFeature feature) const;

@@ -19,6 +19,10 @@ struct ToolPath {
   bool moves() const { return steps > 0; }
   /// The body's pose after step `step` of K, relative to its placement (step 0: the identity).
   Eigen::Isometry3d pose(int step) const;
+  /// The pose at `progress` load steps, 0 … K, fractional for a cut step (load_steps.hpp):
+  /// progress/K of the translation and of each angle. At a whole number it is pose(int), bit
+  /// for bit (the same arithmetic).
+  Eigen::Isometry3d pose_at(double progress) const;
   /// The translation and the angles after step `step` (for reports).
   Eigen::Vector3d translation_at(int step) const;
   Eigen::Vector3d rotation_deg_at(int step) const;

@@ -17,6 +17,7 @@
 #include "fabform/output/run_inputs.hpp"
 #include "fabform/scene/scene.hpp"
 #include "fabform/solver/grid_continuation.hpp"
+#include "fabform/solver/load_steps.hpp"
 #include "fabform/solver/solver_state.hpp"
 #include "fabform/solver/summary.hpp"
 
@@ -25,6 +26,7 @@ namespace fabform {
 /// A finished load step's results: its entry in result.json's "steps" (JSON text) and its files.
 struct StepResult {
   int step = 0;
+  StepCuts cuts;  // how the step was cut (load_steps.hpp), also in its JSON
   std::string json;
   std::string fabric_vtp;
   std::string bodies_vtp;
@@ -46,8 +48,9 @@ struct RunRecord {
   const std::vector<ContinuationLevel>* continuation = nullptr;
 };
 
-/// The results of load step `step`, `run` being its rest (its summary the step's own).
-StepResult step_result(const RunRecord& run, int step);
+/// The results of load step `step`, `run` being its rest (its summary the step's own), `cuts`
+/// how it was cut.
+StepResult step_result(const RunRecord& run, int step, const StepCuts& cuts = {});
 
 /// The finished steps a results folder holds (a resumed run's), read back from its result.json
 /// and step files; throws InputError naming what is missing or damaged.

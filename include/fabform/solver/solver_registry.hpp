@@ -28,6 +28,9 @@ struct SolverSpec {
   // Grid continuation (grid_continuation.hpp): at most this many coarser grids, each half the
   // last's divisions, solved first to give this grid its start; 0: none. Newton's alone.
   int continuation_levels = 0;
+  // A load step that does not converge (load_steps.hpp) is cut in half and solved again, a half
+  // that does not is cut again, down to 1/2^max_step_cuts of the step; 0: never cut. 0 … 20.
+  int max_step_cuts = 4;
 
   /// Sets every solver's e (N).
   void set_tolerance_N(double tolerance_N);
