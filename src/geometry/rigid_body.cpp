@@ -302,21 +302,19 @@ std::optional<SurfacePoint> RigidBody::first_entry_placed(const Eigen::Vector3d&
   return std::nullopt;
 }
 
-void RigidBody::wrap_edges_sharper_than(double angle_deg) {
-  if (!(angle_deg > 0.0 && angle_deg < 180.0)) throw std::invalid_argument("an edge's angle must be in (0, 180) degrees");
+void RigidBody::visit_convex_edges(double angle_deg,
+                                   const std::function<void(const SharpEdge&, int, int)>& visit) const {
   const double cos_limit = std::cos(angle_deg * M_PI / 180.0);
   const auto& V = mesh_.vertices;
   const auto& T = mesh_.triangles;
   const EdgeBuckets buckets = bucket_edges(T, V.size());
-  sharp_edges_.clear();
-  sharp_edge_at_.assign(T.size(), {-1, -1, -1});
   for (std::size_t low = 0; low < V.size(); ++low) {
     std::vector<EdgeCorner> bucket(buckets.corners.begin() + buckets.start[low],
                                    buckets.corners.begin() + buckets.start[low + 1]);
     std::sort(bucket.begin(), bucket.end());
     for (std::size_t first = 0, last = 0; first < bucket.size(); first = last) {
       for (last = first; last < bucket.size() && bucket[last].high == bucket[first].high;) ++last;
-      if (last - first != 2) continue;  // a rim, or more than two faces: no wedge to wrap
+      if (last - first != 2) continue;  // a rim, or more than two faces: no wedge
       const std::uint32_t c1 = bucket[first].corner, c2 = bucket[first + 1].corner;
       const Eigen::Vector3d& n1 = face_normals_[c1 / 3];
       const Eigen::Vector3d& n2 = face_normals_[c2 / 3];
@@ -324,12 +322,70 @@ void RigidBody::wrap_edges_sharper_than(double angle_deg) {
       // Convex where the second face's far corner lies behind the first face.
       const Eigen::Vector3d& far = V[T[c2 / 3][(c2 % 3 + 2) % 3]];
       if ((far - V[low]).dot(n1) >= 0.0) continue;
-      const int index = static_cast<int>(sharp_edges_.size());
-      sharp_edges_.push_back({V[low], V[static_cast<std::size_t>(bucket[first].high)], n1, n2});
-      sharp_edge_at_[c1 / 3][c1 % 3] = sharp_edge_at_[c2 / 3][c2 % 3] = index;
+      visit({V[low], V[static_cast<std::size_t>(bucket[first].high)], n1, n2}, static_cast<int>(c1), static_cast<int>(c2));
     }
   }
+}
+
+void RigidBody::wrap_edges_sharper_than(double angle_deg) {
+  if (!(angle_deg > 0.0 && angle_deg < 180.0)) throw std::invalid_argument("an edge's angle must be in (0, 180) degrees");
+  sharp_edges_.clear();
+  sharp_edge_at_.assign(mesh_.triangles.size(), {-1, -1, -1});
+  visit_convex_edges(angle_deg, [&](const SharpEdge& edge, int c1, int c2) {
+    const int index = static_cast<int>(sharp_edges_.size());
+    sharp_edges_.push_back(edge);
+    sharp_edge_at_[static_cast<std::size_t>(c1 / 3)][static_cast<std::size_t>(c1 % 3)] =
+        sharp_edge_at_[static_cast<std::size_t>(c2 / 3)][static_cast<std::size_t>(c2 % 3)] = index;
+  });
   wrap_angle_deg_ = angle_deg;
+}
+
+std::vector<SharpEdge> RigidBody::convex_edges(double angle_deg) const {
+  if (!(angle_deg > 0.0 && angle_deg < 180.0)) throw std::invalid_argument("an edge's angle must be in (0, 180) degrees");
+  std::vector<SharpEdge> edges;
+  visit_convex_edges(angle_deg, [&](const SharpEdge& edge, int, int) { edges.push_back(edge); });
+  add_crack_edges(std::cos(angle_deg * M_PI / 180.0), edges);
+  return edges;
+}
+
+// A CAD tessellation leaves cracks where two faces of the part meet: a rim edge on one side, the
+// other side's triangles ending on the same line in other vertices (T-junctions). Such an edge is
+// still the part's edge: its second face is the triangle on the other side whose edge runs along
+// it through its middle.
+void RigidBody::add_crack_edges(double cos_limit, std::vector<SharpEdge>& edges) const {
+  const auto& V = mesh_.vertices;
+  const auto& T = mesh_.triangles;
+  const double near = 1e-6 * box_.diagonal();
+  for (std::size_t t = 0; t < T.size(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      if (!edge_on_rim_[t][static_cast<std::size_t>(c)]) continue;
+      const Eigen::Vector3d& a = V[static_cast<std::size_t>(T[t][static_cast<std::size_t>(c)])];
+      const Eigen::Vector3d& b = V[static_cast<std::size_t>(T[t][static_cast<std::size_t>((c + 1) % 3)])];
+      const Eigen::Vector3d& n1 = face_normals_[t];
+      const Eigen::Vector3d middle = 0.5 * (a + b), along = (b - a).normalized();
+      int partner = -1;
+      bvh_->visit_near(middle, near, [&](int other) {
+        if (partner >= 0 || other == static_cast<int>(t)) return near;
+        const auto& o = T[static_cast<std::size_t>(other)];
+        for (int k = 0; k < 3 && partner < 0; ++k) {
+          const Eigen::Vector3d& p = V[static_cast<std::size_t>(o[static_cast<std::size_t>(k)])];
+          const Eigen::Vector3d& q = V[static_cast<std::size_t>(o[static_cast<std::size_t>((k + 1) % 3)])];
+          const Eigen::Vector3d side = q - p;
+          const bool collinear = side.normalized().cross(along).norm() < 1e-6 &&
+                                 (middle - p).cross(side).norm() <= near * side.norm();
+          if (collinear && (middle - p).dot(side) > 0.0 && (middle - q).dot(side) < 0.0) partner = other;
+        }
+        return near;
+      });
+      if (partner < 0) continue;
+      const Eigen::Vector3d& n2 = face_normals_[static_cast<std::size_t>(partner)];
+      if (n1.isZero() || n2.isZero() || n1.dot(n2) > cos_limit) continue;
+      const auto& o = T[static_cast<std::size_t>(partner)];
+      const Eigen::Vector3d centre = (V[static_cast<std::size_t>(o[0])] + V[static_cast<std::size_t>(o[1])] +
+                                      V[static_cast<std::size_t>(o[2])]) / 3.0;
+      if ((centre - a).dot(n1) >= 0.0) continue;  // concave
+      edges.push_back({a, b, n1, n2});
+    }
 }
 
 std::optional<EdgeWrap> RigidBody::wrap(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {

@@ -13,6 +13,7 @@
 #include "fabform/io/mesh_reader.hpp"
 #include "fabform/material/material_csv.hpp"
 #include "fabform/model/clamp_frame.hpp"
+#include "fabform/model/edge_contact.hpp"
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
@@ -417,6 +418,17 @@ Eigen::Vector3d pressure_reference(const Scene& scene, const Model& model) {
   return rim;
 }
 
+void add_edge_contact(const Scene& scene, Model* model) {
+  std::vector<double> angles;
+  for (const BodySpec& body : scene.bodies) angles.push_back(body.edge_contact_deg);
+  if (std::none_of(angles.begin(), angles.end(), [](double a) { return a > 0.0; })) return;
+  const double stiffness = EdgeContact::default_stiffness(*model);
+  if (!(stiffness > 0.0))
+    throw InputError(scene.warp_where, "edge contact needs the fabric's stiffness at rest, and its warp and weft "
+                                       "tables start slack");
+  model->terms.push_back(std::make_shared<EdgeContact>(*model, angles, stiffness));
+}
+
 void add_pressure(const Scene& scene, Model* model) {
   if (!scene.pressure.on) return;
   const Eigen::Vector3d reference = pressure_reference(scene, *model);
@@ -485,6 +497,7 @@ Model build_model(const Scene& scene, const Model* placed_from) {
   add_clamp(scene, &model);
   perturb_start(scene.perturbation, model.locks, &model.start);  // after every lock is known
   add_pressure(scene, &model);
+  add_edge_contact(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);
   for (std::string& w : plausibility_warnings(fabric_values(scene, model, mass, rigidity)))

@@ -398,10 +398,22 @@ BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t ind
       r.fail("wrap_edges_deg",
              "the angle between an edge's faces from which springs wrap it must be in (0, 180) degrees (0: none)");
   }
+  if (r.has("edge_contact_deg")) {
+    body.edge_contact_deg = r.number("edge_contact_deg", 0.0);
+    body.edge_contact_where = r.locate_key("edge_contact_deg");
+    if (!(body.edge_contact_deg >= 0.0 && body.edge_contact_deg < 180.0))
+      r.fail("edge_contact_deg",
+             "the angle between an edge's faces from which springs are kept from under it must be in (0, 180) "
+             "degrees (0: none)");
+    if (body.edge_contact_deg > 0.0 && body.wrap_edges_deg > 0.0)
+      r.fail("edge_contact_deg", "a body's edges are either wrapped (wrap_edges_deg) or kept out of the springs "
+                                 "(edge_contact_deg), not both");
+  }
   std::string field;
   if (const std::string why = body.placement.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (r.has("path")) read_path(r.table("path", false), &body);
-  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m", "friction", "wrap_edges_deg", "path"});
+  r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m", "friction", "wrap_edges_deg",
+                    "edge_contact_deg", "path"});
   return body;
 }
 
@@ -590,12 +602,15 @@ void read_solver(TableReader r, Scene* scene) {
   s.dynamic.stretch_limit = r.number("stretch_limit", s.dynamic.stretch_limit);
   s.threads = checked_int(r, "threads", r.integer("threads", 1), 1, 1024);
   s.continuation_levels = checked_int(r, "continuation_levels", r.integer("continuation_levels", 0), 0, 10);
+  // How often a load step that does not converge is cut in half (load_steps.hpp); 0: never.
+  s.max_step_cuts = checked_int(r, "max_step_cuts", r.integer("max_step_cuts", s.max_step_cuts), 0, 20);
   std::string field;
   for (const SolverEntry& solver : solvers())
     if (const std::string why = solver.invalid_reason(s, &field); !why.empty()) r.fail(field, why);
   r.reject_unknown({"name", "tolerance_N", "tolerance_relative", "tolerance_m", "max_iterations", "C", "regularization", "slack_stiffness", "armijo",
                     "max_backtracks", "areal_density_kg_m2", "damping", "time_step_fraction",
-                    "stretch_limit", "threads", "friction_creep", "continuation_levels", "linear_solver"});
+                    "stretch_limit", "threads", "friction_creep", "continuation_levels", "linear_solver",
+                    "max_step_cuts"});
 }
 
 void read_gravity(TableReader r, Scene* scene) {
@@ -747,6 +762,15 @@ void refuse_wrapped_edges_in_dynamic(const Scene& scene, TableReader& solver) {
                               "), which dynamic cannot carry (no stable time step bounds a wrapped spring): use newton or relax");
 }
 
+// The edge penalty is far stiffer than the fabric: only newton, which takes its Hessian, carries it.
+void refuse_edge_contact_but_in_newton(const Scene& scene, TableReader& solver) {
+  if (scene.solver.name == "newton") return;
+  for (const BodySpec& body : scene.bodies)
+    if (body.edge_contact_deg > 0.0)
+      solver.fail("name", "body '" + body.name + "' keeps springs from under its edges (" +
+                              said_at(body.edge_contact_where) + "), a penalty only newton carries: use newton");
+}
+
 Scene read_scene(const toml::table& root, const std::string& path,
                  const OverriddenKeys& overridden) {
   Scene scene;
@@ -783,6 +807,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
                             scene.solver.name);
   refuse_friction_in_relax(scene, solver);
   refuse_wrapped_edges_in_dynamic(scene, solver);
+  refuse_edge_contact_but_in_newton(scene, solver);
   refuse_hysteresis_in_dynamic(scene, solver);
   refuse_hysteresis_in_load_steps(scene);
   if (scene.clamp.on && scene.solver.name != "newton")

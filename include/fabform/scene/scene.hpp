@@ -33,6 +33,10 @@ struct BodySpec {
   // default: contact is the nodes' alone, as in seed 003.
   double wrap_edges_deg = 0.0;
   SourceLocation wrap_edges_where;
+  // The fabric's springs are kept out from under the body's convex edges whose faces turn by at
+  // least this much (degrees), by a smooth penalty (edge_contact.hpp); 0, the default: none.
+  double edge_contact_deg = 0.0;
+  SourceLocation edge_contact_where;
   ToolPath path;               // [body.path]: its travel in load steps (steps 0: it stays put)
   bool pivot_given = false;    // else the turn is about the placed mesh's bounding box's centre
   SourceLocation steps_where;  // path.steps, for messages

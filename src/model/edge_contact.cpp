@@ -1,0 +1,342 @@
+#include "fabform/model/edge_contact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "fabform/model/force_scale.hpp"
+#include "fabform/model/model.hpp"
+#include "fabform/thread_count.hpp"
+
+namespace fabform {
+namespace {
+
+// κ over the softest spring's stiffness at rest (edge_contact.hpp says why so stiff).
+constexpr double kStiffnessRatio = 1000.0;
+// An edge's weight falls to 0 within this share of the mean spring's rest length past its ends.
+constexpr double kMarginShare = 0.25;
+// A spring whose direction is within this share of its length parallel to the bisecting plane
+// runs along the edge: it reaches under it nowhere in particular.
+constexpr double kParallelShare = 1e-9;
+
+double smoothstep(double u) { return u * u * (3.0 - 2.0 * u); }
+double smoothstep_slope(double u) { return 6.0 * u * (1.0 - u); }
+
+bool stretches_surface(SpringKind kind) { return kind != SpringKind::bend; }
+
+double mean_surface_spring_length(const Fabric& fabric) {
+  double sum = 0.0;
+  int count = 0;
+  for (const Spring& s : fabric.springs())
+    if (s.kind == SpringKind::warp || s.kind == SpringKind::weft) sum += s.rest_length, ++count;
+  return count > 0 ? sum / count : 0.0;
+}
+
+using CellKey = std::int64_t;
+
+CellKey cell_key(const Eigen::Vector3i& c) {
+  const auto part = [](int v) { return static_cast<CellKey>(v & 0x1fffff); };
+  return (part(c.x()) << 42) | (part(c.y()) << 21) | part(c.z());
+}
+
+// Two edges that meet continue each other when they run on (rather than turn back) between faces
+// turned alike: a CAD edge cut in pieces, a fillet's facets.
+constexpr double kContinuedCos = 0.866;  // 30°
+
+bool continues(const SharpEdge& e, const Eigen::Vector3d& away, const SharpEdge& other,
+               const Eigen::Vector3d& other_away) {
+  const auto alike = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) { return u.dot(v) > kContinuedCos; };
+  const bool faces = (alike(e.normal_a, other.normal_a) && alike(e.normal_b, other.normal_b)) ||
+                     (alike(e.normal_a, other.normal_b) && alike(e.normal_b, other.normal_a));
+  return faces && away.dot(other_away) < 0.0;
+}
+
+std::vector<EdgeEnds> edge_ends(const std::vector<SharpEdge>& edges, double margin_m) {
+  // The edges' ends by position (a mesh's edges share their vertices' coordinates exactly).
+  std::map<std::array<double, 3>, std::vector<std::pair<int, bool>>> at;  // edge, at its `from`
+  const auto key = [](const Eigen::Vector3d& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; };
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+    at[key(edges[static_cast<std::size_t>(e)].from)].emplace_back(e, true);
+    at[key(edges[static_cast<std::size_t>(e)].to)].emplace_back(e, false);
+  }
+  // The direction an edge leaves a vertex it ends at.
+  const auto away = [&](int e, bool from) {
+    const SharpEdge& edge = edges[static_cast<std::size_t>(e)];
+    return Eigen::Vector3d(from ? edge.to - edge.from : edge.from - edge.to);
+  };
+  std::vector<EdgeEnds> ends(edges.size(), EdgeEnds{true, true, margin_m});
+  for (const auto& [vertex, meeting] : at)
+    for (const auto& [e, from] : meeting)
+      for (const auto& [other, other_from] : meeting) {
+        if (other == e || !continues(edges[static_cast<std::size_t>(e)], away(e, from),
+                                     edges[static_cast<std::size_t>(other)], away(other, other_from)))
+          continue;
+        (from ? ends[static_cast<std::size_t>(e)].capped_from : ends[static_cast<std::size_t>(e)].capped_to) = false;
+      }
+  return ends;
+}
+
+}  // namespace
+
+std::optional<EdgeReach> reach_under_edge(const SharpEdge& edge, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                          const EdgeEnds& ends) {
+  const Eigen::Vector3d d = b - a;
+  const Eigen::Vector3d beta = edge.normal_a - edge.normal_b;  // normal to the bisecting plane
+  const double across = d.dot(beta);
+  if (std::abs(across) <= kParallelShare * d.norm() * beta.norm()) return std::nullopt;
+  const double s = (edge.from - a).dot(beta) / across;
+  if (!(s > 0.0 && s < 1.0)) return std::nullopt;
+  const Eigen::Vector3d p = a + s * d;
+  // On the bisecting plane the depth below either face is the same.
+  const double depth = -(p - edge.from).dot(edge.normal_a);
+  if (!(depth > 0.0)) return std::nullopt;
+  const Eigen::Vector3d line = edge.to - edge.from;
+  const double length = line.norm();
+  if (!(length > 0.0)) return std::nullopt;
+  const Eigen::Vector3d axis = line / length;
+  const double t = (p - edge.from).dot(axis);  // metres along the edge
+  // The faces bound the body only near their edge: a segment between two nodes outside it
+  // reaches under the edge within its own length of it (farther, it is under another part).
+  if ((p - edge.from - t * axis).squaredNorm() > d.squaredNorm()) return std::nullopt;
+  // Past a capped end the body has ended; past a continued one the next edge takes over as
+  // the weight falls from 1 to 0 within the margin. `sign` is ∂beyond/∂t.
+  double beyond = 0.0, sign = 0.0;
+  if (t < 0.0) beyond = -t, sign = -1.0;
+  if (t > length) beyond = t - length, sign = 1.0;
+  const bool capped = sign < 0.0 ? ends.capped_from : ends.capped_to;
+  if (beyond > 0.0 && (capped || beyond >= ends.margin_m)) return std::nullopt;
+  // ∂t/∂a = (1 − s) h, ∂t/∂b = s h: p moves with its ends and along the spring as s changes.
+  const Eigen::Vector3d h = axis - (d.dot(axis) / across) * beta;
+  EdgeReach reach;
+  reach.along = s;
+  reach.depth = depth;
+  reach.direction = edge.normal_a - (d.dot(edge.normal_a) / across) * beta;
+  // Near a capped end (a corner) the body ends across the edge: no deeper than the end is far.
+  if (ends.capped_from && t < reach.depth) reach.depth = t, reach.direction = -h;
+  if (ends.capped_to && length - t < reach.depth) reach.depth = length - t, reach.direction = h;
+  reach.weight = 1.0;
+  if (beyond > 0.0) {
+    const double u = beyond / ends.margin_m;
+    reach.weight = 1.0 - smoothstep(u);
+    const double slope = -smoothstep_slope(u) / ends.margin_m * sign;  // ∂w/∂t
+    reach.weight_gradient_a = slope * (1.0 - s) * h;
+    reach.weight_gradient_b = slope * s * h;
+  }
+  return reach;
+}
+
+EdgePenalty edge_penalty(const EdgeReach& reach, double stiffness_N_m) {
+  const double k = stiffness_N_m, w = reach.weight, delta = reach.depth, s = reach.along;
+  EdgePenalty penalty;
+  penalty.energy = 0.5 * k * w * delta * delta;
+  // ∂δ/∂a = −(1 − s) g, ∂δ/∂b = −s g (edge_contact.hpp).
+  penalty.gradient_a = 0.5 * k * delta * delta * reach.weight_gradient_a - k * w * delta * (1.0 - s) * reach.direction;
+  penalty.gradient_b = 0.5 * k * delta * delta * reach.weight_gradient_b - k * w * delta * s * reach.direction;
+  return penalty;
+}
+
+// One body's edges in its placed frame, hashed into cubic cells (each edge in every cell its box,
+// widened by the margin, meets).
+struct EdgeContact::BodyEdges {
+  int body = 0;
+  std::vector<SharpEdge> edges;
+  std::vector<EdgeEnds> ends;  // per edge
+  double cell_m = 1.0;
+  std::unordered_map<CellKey, std::vector<int>> cells;
+
+  Eigen::Vector3i cell_of(const Eigen::Vector3d& p) const { return (p / cell_m).array().floor().cast<int>(); }
+
+  Eigen::Vector3i lowest = Eigen::Vector3i::Constant(std::numeric_limits<int>::max());
+  Eigen::Vector3i highest = Eigen::Vector3i::Constant(std::numeric_limits<int>::min());
+
+  void add(int index, double margin_m) {
+    const SharpEdge& e = edges[static_cast<std::size_t>(index)];
+    const Eigen::Vector3i lo = cell_of(e.from.cwiseMin(e.to).array() - margin_m);
+    const Eigen::Vector3i hi = cell_of(e.from.cwiseMax(e.to).array() + margin_m);
+    lowest = lowest.cwiseMin(lo);
+    highest = highest.cwiseMax(hi);
+    for (int i = lo.x(); i <= hi.x(); ++i)
+      for (int j = lo.y(); j <= hi.y(); ++j)
+        for (int k = lo.z(); k <= hi.z(); ++k) cells[cell_key({i, j, k})].push_back(index);
+  }
+
+  // The edges whose cells the box lo–hi meets, each once, in index order.
+  std::vector<int> near(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const {
+    std::vector<int> found;
+    // Cells past the edges' own hold none; a box over more cells than there are edges (a trial
+    // step gone far) is answered by every edge.
+    const Eigen::Array3d low = (lo / cell_m).array().floor().max(lowest.cast<double>().array());
+    const Eigen::Array3d high = (hi / cell_m).array().floor().min(highest.cast<double>().array());
+    if ((low > high).any()) return found;
+    if ((high - low + 1.0).prod() > static_cast<double>(edges.size())) {
+      found.resize(edges.size());
+      for (std::size_t e = 0; e < edges.size(); ++e) found[e] = static_cast<int>(e);
+      return found;
+    }
+    const Eigen::Vector3i from = low.cast<int>(), to = high.cast<int>();
+    for (int i = from.x(); i <= to.x(); ++i)
+      for (int j = from.y(); j <= to.y(); ++j)
+        for (int k = from.z(); k <= to.z(); ++k)
+          if (const auto it = cells.find(cell_key({i, j, k})); it != cells.end())
+            found.insert(found.end(), it->second.begin(), it->second.end());
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+  }
+};
+
+EdgeContact::EdgeContact(const Model& model, const std::vector<double>& angles_deg, double stiffness_N_m)
+    : stiffness_N_m_(stiffness_N_m), margin_m_(kMarginShare * mean_surface_spring_length(model.fabric)) {
+  if (!(std::isfinite(stiffness_N_m) && stiffness_N_m > 0.0))
+    throw std::invalid_argument("edge contact: the penalty's stiffness must be positive and finite");
+  const double spring = mean_surface_spring_length(model.fabric);
+  for (std::size_t b = 0; b < model.bodies.size() && b < angles_deg.size(); ++b) {
+    if (!(angles_deg[b] > 0.0)) continue;
+    BodyEdges body;
+    body.body = static_cast<int>(b);
+    body.edges = model.bodies[b].convex_edges(angles_deg[b]);
+    body.cell_m = spring > 0.0 ? 2.0 * spring : model.bodies[b].box().diagonal();
+    body.ends = edge_ends(body.edges, margin_m_);
+    for (int e = 0; e < static_cast<int>(body.edges.size()); ++e) body.add(e, margin_m_);
+    bodies_.push_back(std::move(body));
+  }
+}
+
+EdgeContact::~EdgeContact() = default;
+
+double EdgeContact::default_stiffness(const Model& model) {
+  const double length = mean_surface_spring_length(model.fabric);
+  const double scale = spring_force_scale_N(model);
+  return length > 0.0 && scale > 0.0 ? kStiffnessRatio * scale / length : 0.0;
+}
+
+int EdgeContact::edge_count() const {
+  int count = 0;
+  for (const BodyEdges& body : bodies_) count += static_cast<int>(body.edges.size());
+  return count;
+}
+
+std::string EdgeContact::describe(const Model& model) const {
+  std::string bodies;
+  for (const BodyEdges& body : bodies_)
+    bodies += (bodies.empty() ? "" : ", ") + model.bodies[static_cast<std::size_t>(body.body)].name() + " (" +
+              std::to_string(body.edges.size()) + " edges)";
+  char text[160];
+  std::snprintf(text, sizeof text, "; penalty stiffness %.6g N/m", stiffness_N_m_);
+  return "edge contact: warp, weft and shear springs kept out from under the convex edges of " + bodies + text;
+}
+
+bool EdgeContact::covers(const Model& model, int spring) const {
+  return stretches_surface(model.fabric.springs()[static_cast<std::size_t>(spring)].kind);
+}
+
+EdgeContact::SpringPenalty EdgeContact::spring_penalty(const Model& model, const Eigen::Vector3d& a,
+                                                       const Eigen::Vector3d& b, std::vector<EdgeReach>* reaches) const {
+  SpringPenalty total;
+  for (const BodyEdges& body : bodies_) {
+    const RigidBody& rigid = model.bodies[static_cast<std::size_t>(body.body)];
+    // Edges are kept where the body was placed; the spring is carried there, the answer back.
+    const Eigen::Isometry3d to_placed = rigid.pose().inverse();
+    const Eigen::Vector3d pa = to_placed * a, pb = to_placed * b;
+    // The deepest point of a cut lies within the spring's length of it.
+    const double reach_m = std::max((pb - pa).norm(), margin_m_);
+    const Eigen::Vector3d lo = pa.cwiseMin(pb).array() - reach_m, hi = pa.cwiseMax(pb).array() + reach_m;
+    const Eigen::Matrix3d turn = rigid.pose().linear();
+    for (const int e : body.near(lo, hi)) {
+      const auto k = static_cast<std::size_t>(e);
+      auto reach = reach_under_edge(body.edges[k], pa, pb, body.ends[k]);
+      if (!reach) continue;
+      reach->direction = turn * reach->direction;
+      reach->weight_gradient_a = turn * reach->weight_gradient_a;
+      reach->weight_gradient_b = turn * reach->weight_gradient_b;
+      const EdgePenalty p = edge_penalty(*reach, stiffness_N_m_);
+      total.energy += p.energy;
+      total.gradient_a += p.gradient_a;
+      total.gradient_b += p.gradient_b;
+      if (reaches) reaches->push_back(*reach);
+    }
+  }
+  return total;
+}
+
+Eigen::Vector3d EdgeContact::force_at(const Model& model, const Positions& x, int node,
+                                      const Eigen::Vector3d& at) const {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  for (const int s : model.fabric.springs_at(node)) {
+    if (!covers(model, s)) continue;
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
+    const bool is_a = spring.a == node;
+    const Eigen::Vector3d& a = is_a ? at : x[static_cast<std::size_t>(spring.a)];
+    const Eigen::Vector3d& b = is_a ? x[static_cast<std::size_t>(spring.b)] : at;
+    const SpringPenalty p = spring_penalty(model, a, b);
+    force -= is_a ? p.gradient_a : p.gradient_b;
+  }
+  return force;
+}
+
+double EdgeContact::energy(const Model& model, const Positions& x) const {
+  const std::vector<Spring>& springs = model.fabric.springs();
+  const auto count = static_cast<std::ptrdiff_t>(springs.size());
+  // Per spring in parallel, summed in spring order: the same bits for any thread count.
+  std::vector<double> energies(springs.size(), 0.0);
+#pragma omp parallel for schedule(static) if (count >= kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    const Spring& s = springs[static_cast<std::size_t>(i)];
+    if (stretches_surface(s.kind))
+      energies[static_cast<std::size_t>(i)] =
+          spring_penalty(model, x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)]).energy;
+  }
+  double energy = 0.0;
+  for (const double e : energies) energy += e;
+  return energy;
+}
+
+double EdgeContact::node_energy_change(const Model& model, const Positions& x, int node,
+                                       const Eigen::Vector3d& at) const {
+  double change = 0.0;
+  for (const int s : model.fabric.springs_at(node)) {
+    if (!covers(model, s)) continue;
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
+    const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
+    const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
+    const double before = spring_penalty(model, a, b).energy;
+    change += (spring.a == node ? spring_penalty(model, at, b) : spring_penalty(model, a, at)).energy - before;
+  }
+  return change;
+}
+
+void EdgeContact::add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const {
+  const std::vector<Spring>& springs = model.fabric.springs();
+  // Each spring's reaches found in parallel, their blocks added in spring order.
+  std::vector<std::vector<EdgeReach>> reaches(springs.size());
+#pragma omp parallel for schedule(dynamic, 256) if (springs.size() >= kMinParallelItems)
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(springs.size()); ++i) {
+    const Spring& s = springs[static_cast<std::size_t>(i)];
+    if (stretches_surface(s.kind))
+      spring_penalty(model, x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)],
+                     &reaches[static_cast<std::size_t>(i)]);
+  }
+  sink.add_each(springs.size(), [&](std::size_t i, StiffnessSink& part) {
+    for (const EdgeReach& r : reaches[i]) {
+      const Eigen::Matrix3d ggT = stiffness_N_m_ * r.weight * r.direction * r.direction.transpose();
+      const double s = r.along;
+      part.add(springs[i].a, springs[i].a, (1.0 - s) * (1.0 - s) * ggT);
+      part.add(springs[i].b, springs[i].b, s * s * ggT);
+      part.add(springs[i].a, springs[i].b, s * (1.0 - s) * ggT);
+    }
+  });
+}
+
+std::string EdgeContact::refusal(const std::string& solver) const {
+  if (solver == "newton") return "";
+  return "edge contact (edge_contact_deg) is a penalty far stiffer than the fabric, which only newton carries: " +
+         solver + (solver == "dynamic" ? "'s time step would be bound by it" : "'s node-by-node rule would crawl under it");
+}
+
+}  // namespace fabform
