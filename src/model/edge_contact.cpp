@@ -1,12 +1,10 @@
 #include "fabform/model/edge_contact.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
-#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -45,40 +43,24 @@ CellKey cell_key(const Eigen::Vector3i& c) {
   return (part(c.x()) << 42) | (part(c.y()) << 21) | part(c.z());
 }
 
-// Two edges that meet continue each other when they run on (rather than turn back) between faces
-// turned alike: a CAD edge cut in pieces, a fillet's facets.
-constexpr double kContinuedCos = 0.866;  // 30°
+// Whether the body goes on past an edge's end, within the edge's wedge: a point just past the end
+// and just under the edge lies inside it (a long CAD edge cut in pieces, a fillet's facets, a
+// pocket's rim round its corner), or the body ends there (a box's corner). Probed this share of
+// the shorter of the edge and the margin away.
+constexpr double kProbeShare = 0.05;
 
-bool continues(const SharpEdge& e, const Eigen::Vector3d& away, const SharpEdge& other,
-               const Eigen::Vector3d& other_away) {
-  const auto alike = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) { return u.dot(v) > kContinuedCos; };
-  const bool faces = (alike(e.normal_a, other.normal_a) && alike(e.normal_b, other.normal_b)) ||
-                     (alike(e.normal_a, other.normal_b) && alike(e.normal_b, other.normal_a));
-  return faces && away.dot(other_away) < 0.0;
+bool goes_on_past(const RigidBody& body, const SharpEdge& edge, bool from_end, double margin_m) {
+  const Eigen::Vector3d end = from_end ? edge.from : edge.to;
+  const Eigen::Vector3d past = (from_end ? edge.from - edge.to : edge.to - edge.from).normalized();
+  const Eigen::Vector3d under = -(edge.normal_a + edge.normal_b).normalized();
+  const double probe = kProbeShare * std::min((edge.to - edge.from).norm(), margin_m);
+  return body.closest(body.pose() * (end + probe * (past + under))).signed_distance < 0.0;
 }
 
-std::vector<EdgeEnds> edge_ends(const std::vector<SharpEdge>& edges, double margin_m) {
-  // The edges' ends by position (a mesh's edges share their vertices' coordinates exactly).
-  std::map<std::array<double, 3>, std::vector<std::pair<int, bool>>> at;  // edge, at its `from`
-  const auto key = [](const Eigen::Vector3d& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; };
-  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-    at[key(edges[static_cast<std::size_t>(e)].from)].emplace_back(e, true);
-    at[key(edges[static_cast<std::size_t>(e)].to)].emplace_back(e, false);
-  }
-  // The direction an edge leaves a vertex it ends at.
-  const auto away = [&](int e, bool from) {
-    const SharpEdge& edge = edges[static_cast<std::size_t>(e)];
-    return Eigen::Vector3d(from ? edge.to - edge.from : edge.from - edge.to);
-  };
-  std::vector<EdgeEnds> ends(edges.size(), EdgeEnds{true, true, margin_m});
-  for (const auto& [vertex, meeting] : at)
-    for (const auto& [e, from] : meeting)
-      for (const auto& [other, other_from] : meeting) {
-        if (other == e || !continues(edges[static_cast<std::size_t>(e)], away(e, from),
-                                     edges[static_cast<std::size_t>(other)], away(other, other_from)))
-          continue;
-        (from ? ends[static_cast<std::size_t>(e)].capped_from : ends[static_cast<std::size_t>(e)].capped_to) = false;
-      }
+std::vector<EdgeEnds> edge_ends(const RigidBody& body, const std::vector<SharpEdge>& edges, double margin_m) {
+  std::vector<EdgeEnds> ends;
+  for (const SharpEdge& edge : edges)
+    ends.push_back({!goes_on_past(body, edge, true, margin_m), !goes_on_past(body, edge, false, margin_m), margin_m});
   return ends;
 }
 
@@ -202,7 +184,7 @@ EdgeContact::EdgeContact(const Model& model, const std::vector<double>& angles_d
     body.body = static_cast<int>(b);
     body.edges = model.bodies[b].convex_edges(angles_deg[b]);
     body.cell_m = spring > 0.0 ? 2.0 * spring : model.bodies[b].box().diagonal();
-    body.ends = edge_ends(body.edges, margin_m_);
+    body.ends = edge_ends(model.bodies[b], body.edges, margin_m_);
     for (int e = 0; e < static_cast<int>(body.edges.size()); ++e) body.add(e, margin_m_);
     bodies_.push_back(std::move(body));
   }

@@ -36,10 +36,10 @@ struct EdgeReach {
   Eigen::Vector3d weight_gradient_b = Eigen::Vector3d::Zero();  // ∂w/∂b
 };
 
-/// How an edge ends. At a corner (no edge continues it with the same faces) the body ends across
-/// it: a segment reaches under the edge no deeper than its crossing lies from the end, and past
-/// the end not at all. Where an edge continues (a long CAD edge cut into several, a fillet's
-/// facets), its wedge reaches on past the end, its weight falling to 0 within `margin_m`.
+/// How an edge ends. At a corner (a box's) the body ends across it: a segment reaches under the
+/// edge no deeper than its crossing lies from the end, and past the end not at all. Where the
+/// body goes on past the end (a long CAD edge cut in pieces, a fillet's facets, a pocket's rim
+/// round its corner), the wedge reaches on past it, its weight falling to 0 within `margin_m`.
 struct EdgeEnds {
   bool capped_from = true;
   bool capped_to = true;
