@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include <Eigen/Geometry>
+
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/model.hpp"
 #include "fabform/thread_count.hpp"
@@ -129,6 +131,8 @@ struct EdgeContact::BodyEdges {
   int body = 0;
   std::vector<SharpEdge> edges;
   std::vector<EdgeEnds> ends;  // per edge
+  std::vector<Eigen::AlignedBox3d> boxes;  // per edge, widened by the margin
+  mutable std::vector<NearEdges> cache;     // per spring (edges_near)
   double cell_m = 1.0;
   std::unordered_map<CellKey, std::vector<int>> cells;
 
@@ -139,8 +143,10 @@ struct EdgeContact::BodyEdges {
 
   void add(int index, double margin_m) {
     const SharpEdge& e = edges[static_cast<std::size_t>(index)];
-    const Eigen::Vector3i lo = cell_of(e.from.cwiseMin(e.to).array() - margin_m);
-    const Eigen::Vector3i hi = cell_of(e.from.cwiseMax(e.to).array() + margin_m);
+    boxes.emplace_back(Eigen::Vector3d(e.from.cwiseMin(e.to).array() - margin_m),
+                       Eigen::Vector3d(e.from.cwiseMax(e.to).array() + margin_m));
+    const Eigen::Vector3i lo = cell_of(boxes.back().min());
+    const Eigen::Vector3i hi = cell_of(boxes.back().max());
     lowest = lowest.cwiseMin(lo);
     highest = highest.cwiseMax(hi);
     for (int i = lo.x(); i <= hi.x(); ++i)
@@ -148,17 +154,18 @@ struct EdgeContact::BodyEdges {
         for (int k = lo.z(); k <= hi.z(); ++k) cells[cell_key({i, j, k})].push_back(index);
   }
 
-  // The edges whose cells the box lo–hi meets, each once, in index order.
+  // The edges whose widened boxes meet the box lo–hi, each once, in index order.
   std::vector<int> near(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) const {
     std::vector<int> found;
+    const Eigen::AlignedBox3d box(lo, hi);
     // Cells past the edges' own hold none; a box over more cells than there are edges (a trial
     // step gone far) is answered by every edge.
     const Eigen::Array3d low = (lo / cell_m).array().floor().max(lowest.cast<double>().array());
     const Eigen::Array3d high = (hi / cell_m).array().floor().min(highest.cast<double>().array());
     if ((low > high).any()) return found;
     if ((high - low + 1.0).prod() > static_cast<double>(edges.size())) {
-      found.resize(edges.size());
-      for (std::size_t e = 0; e < edges.size(); ++e) found[e] = static_cast<int>(e);
+      for (std::size_t e = 0; e < edges.size(); ++e)
+        if (boxes[e].intersects(box)) found.push_back(static_cast<int>(e));
       return found;
     }
     const Eigen::Vector3i from = low.cast<int>(), to = high.cast<int>();
@@ -166,7 +173,8 @@ struct EdgeContact::BodyEdges {
       for (int j = from.y(); j <= to.y(); ++j)
         for (int k = from.z(); k <= to.z(); ++k)
           if (const auto it = cells.find(cell_key({i, j, k})); it != cells.end())
-            found.insert(found.end(), it->second.begin(), it->second.end());
+            for (const int e : it->second)
+              if (boxes[static_cast<std::size_t>(e)].intersects(box)) found.push_back(e);
     std::sort(found.begin(), found.end());
     found.erase(std::unique(found.begin(), found.end()), found.end());
     return found;
@@ -185,6 +193,7 @@ EdgeContact::EdgeContact(const Model& model, const std::vector<double>& angles_d
     body.edges = model.bodies[b].convex_edges(angles_deg[b]);
     body.cell_m = spring > 0.0 ? 2.0 * spring : model.bodies[b].box().diagonal();
     body.ends = edge_ends(model.bodies[b], body.edges, margin_m_);
+    body.cache.resize(model.fabric.springs().size());
     for (int e = 0; e < static_cast<int>(body.edges.size()); ++e) body.add(e, margin_m_);
     bodies_.push_back(std::move(body));
   }
@@ -218,19 +227,41 @@ bool EdgeContact::covers(const Model& model, int spring) const {
   return stretches_surface(model.fabric.springs()[static_cast<std::size_t>(spring)].kind);
 }
 
-EdgeContact::SpringPenalty EdgeContact::spring_penalty(const Model& model, const Eigen::Vector3d& a,
+// The edges a spring may reach under are looked up once per Newton step (add_stiffness), in a
+// box wider by kSlackShare of its length on every side; until either end has moved farther than
+// that from where it was, the list holds every edge a fresh lookup would find (and a few more,
+// which reach under nothing), in the same order, so the sums are the same to the bit.
+constexpr double kSlackShare = 0.25;
+
+const std::vector<int>& EdgeContact::edges_near(const BodyEdges& body, int spring, const Eigen::Vector3d& pa,
+                                                const Eigen::Vector3d& pb, bool refresh,
+                                                std::vector<int>& fresh) const {
+  const double length = (pb - pa).norm();
+  NearEdges* cached = spring >= 0 ? &body.cache[static_cast<std::size_t>(spring)] : nullptr;
+  if (cached && !refresh && cached->valid && (pa - cached->a).norm() <= cached->slack &&
+      (pb - cached->b).norm() <= cached->slack)
+    return cached->edges;
+  // The deepest point of a cut lies within the spring's length of it.
+  double reach_m = std::max(length, margin_m_);
+  const double slack = refresh && cached ? kSlackShare * length : 0.0;
+  reach_m += 3.0 * slack;  // covers a spring up to 2·slack longer, its ends `slack` away
+  fresh = body.near(pa.cwiseMin(pb).array() - reach_m, pa.cwiseMax(pb).array() + reach_m);
+  if (!refresh || !cached) return fresh;
+  *cached = NearEdges{pa, pb, slack, true, fresh};
+  return cached->edges;
+}
+
+EdgeContact::SpringPenalty EdgeContact::spring_penalty(const Model& model, int spring, const Eigen::Vector3d& a,
                                                        const Eigen::Vector3d& b, std::vector<EdgeReach>* reaches) const {
   SpringPenalty total;
+  std::vector<int> fresh;
   for (const BodyEdges& body : bodies_) {
     const RigidBody& rigid = model.bodies[static_cast<std::size_t>(body.body)];
     // Edges are kept where the body was placed; the spring is carried there, the answer back.
     const Eigen::Isometry3d to_placed = rigid.pose().inverse();
     const Eigen::Vector3d pa = to_placed * a, pb = to_placed * b;
-    // The deepest point of a cut lies within the spring's length of it.
-    const double reach_m = std::max((pb - pa).norm(), margin_m_);
-    const Eigen::Vector3d lo = pa.cwiseMin(pb).array() - reach_m, hi = pa.cwiseMax(pb).array() + reach_m;
     const Eigen::Matrix3d turn = rigid.pose().linear();
-    for (const int e : body.near(lo, hi)) {
+    for (const int e : edges_near(body, spring, pa, pb, reaches != nullptr, fresh)) {
       const auto k = static_cast<std::size_t>(e);
       auto reach = reach_under_edge(body.edges[k], pa, pb, body.ends[k]);
       if (!reach) continue;
@@ -256,7 +287,7 @@ Eigen::Vector3d EdgeContact::force_at(const Model& model, const Positions& x, in
     const bool is_a = spring.a == node;
     const Eigen::Vector3d& a = is_a ? at : x[static_cast<std::size_t>(spring.a)];
     const Eigen::Vector3d& b = is_a ? x[static_cast<std::size_t>(spring.b)] : at;
-    const SpringPenalty p = spring_penalty(model, a, b);
+    const SpringPenalty p = spring_penalty(model, s, a, b);
     force -= is_a ? p.gradient_a : p.gradient_b;
   }
   return force;
@@ -272,7 +303,8 @@ double EdgeContact::energy(const Model& model, const Positions& x) const {
     const Spring& s = springs[static_cast<std::size_t>(i)];
     if (stretches_surface(s.kind))
       energies[static_cast<std::size_t>(i)] =
-          spring_penalty(model, x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)]).energy;
+          spring_penalty(model, static_cast<int>(i), x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)])
+              .energy;
   }
   double energy = 0.0;
   for (const double e : energies) energy += e;
@@ -287,8 +319,8 @@ double EdgeContact::node_energy_change(const Model& model, const Positions& x, i
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
     const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
     const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
-    const double before = spring_penalty(model, a, b).energy;
-    change += (spring.a == node ? spring_penalty(model, at, b) : spring_penalty(model, a, at)).energy - before;
+    const double before = spring_penalty(model, s, a, b).energy;
+    change += (spring.a == node ? spring_penalty(model, s, at, b) : spring_penalty(model, s, a, at)).energy - before;
   }
   return change;
 }
@@ -301,7 +333,7 @@ void EdgeContact::add_stiffness(const Model& model, const Positions& x, Stiffnes
   for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(springs.size()); ++i) {
     const Spring& s = springs[static_cast<std::size_t>(i)];
     if (stretches_surface(s.kind))
-      spring_penalty(model, x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)],
+      spring_penalty(model, static_cast<int>(i), x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)],
                      &reaches[static_cast<std::size_t>(i)]);
   }
   sink.add_each(springs.size(), [&](std::size_t i, StiffnessSink& part) {

@@ -92,7 +92,20 @@ class EdgeContact final : public Term {
     Eigen::Vector3d gradient_b = Eigen::Vector3d::Zero();
   };
   bool covers(const Model& model, int spring) const;
-  SpringPenalty spring_penalty(const Model& model, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+  // The edges spring `spring` (-1: none in particular) between pa and pb (in the body's placed
+  // frame) may reach under; `refresh` looks them up anew and keeps them (edge_contact.cpp).
+  struct NearEdges {
+    Eigen::Vector3d a = Eigen::Vector3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    double slack = 0.0;
+    bool valid = false;
+    std::vector<int> edges;
+  };
+  const std::vector<int>& edges_near(const BodyEdges& body, int spring, const Eigen::Vector3d& pa,
+                                     const Eigen::Vector3d& pb, bool refresh, std::vector<int>& fresh) const;
+  /// The penalty of spring `spring` placed between a and b; `reaches` gets its reaches, and then
+  /// its nearby edges are looked up anew.
+  SpringPenalty spring_penalty(const Model& model, int spring, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                std::vector<EdgeReach>* reaches = nullptr) const;
 
   std::vector<BodyEdges> bodies_;
