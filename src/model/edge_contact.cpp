@@ -21,6 +21,9 @@ namespace {
 constexpr double kStiffnessRatio = 1000.0;
 // An edge's weight falls to 0 within this share of the mean spring's rest length past its ends.
 constexpr double kMarginShare = 0.25;
+// The penalty's stiffness rises from 0 to κ over this share of the mean spring's rest length of
+// depth, so that Newton's matrix changes continuously as a spring reaches under an edge.
+constexpr double kOnsetShare = 0.02;
 // A spring whose direction is within this share of its length parallel to the bisecting plane
 // runs along the edge: it reaches under it nowhere in particular.
 constexpr double kParallelShare = 1e-9;
@@ -115,13 +118,18 @@ std::optional<EdgeReach> reach_under_edge(const SharpEdge& edge, const Eigen::Ve
   return reach;
 }
 
-EdgePenalty edge_penalty(const EdgeReach& reach, double stiffness_N_m) {
-  const double k = stiffness_N_m, w = reach.weight, delta = reach.depth, s = reach.along;
+EdgePenalty edge_penalty(const EdgeReach& reach, double stiffness_N_m, double onset_m) {
+  const double k = stiffness_N_m, w = reach.weight, delta = reach.depth, s = reach.along, h = onset_m;
+  // φ(δ) = κδ³/(6h) up to h, then κ(δ²/2 − hδ/2 + h²/6): its second derivative rises from 0 to κ.
+  const bool onset = delta < h;
+  const double phi = onset ? k * delta * delta * delta / (6.0 * h) : k * (0.5 * delta * delta - 0.5 * h * delta + h * h / 6.0);
+  const double slope = onset ? k * delta * delta / (2.0 * h) : k * (delta - 0.5 * h);
   EdgePenalty penalty;
-  penalty.energy = 0.5 * k * w * delta * delta;
+  penalty.energy = w * phi;
+  penalty.curvature = w * (onset ? k * delta / h : k);
   // ∂δ/∂a = −(1 − s) g, ∂δ/∂b = −s g (edge_contact.hpp).
-  penalty.gradient_a = 0.5 * k * delta * delta * reach.weight_gradient_a - k * w * delta * (1.0 - s) * reach.direction;
-  penalty.gradient_b = 0.5 * k * delta * delta * reach.weight_gradient_b - k * w * delta * s * reach.direction;
+  penalty.gradient_a = phi * reach.weight_gradient_a - w * slope * (1.0 - s) * reach.direction;
+  penalty.gradient_b = phi * reach.weight_gradient_b - w * slope * s * reach.direction;
   return penalty;
 }
 
@@ -182,7 +190,9 @@ struct EdgeContact::BodyEdges {
 };
 
 EdgeContact::EdgeContact(const Model& model, const std::vector<double>& angles_deg, double stiffness_N_m)
-    : stiffness_N_m_(stiffness_N_m), margin_m_(kMarginShare * mean_surface_spring_length(model.fabric)) {
+    : stiffness_N_m_(stiffness_N_m),
+      margin_m_(kMarginShare * mean_surface_spring_length(model.fabric)),
+      onset_m_(kOnsetShare * mean_surface_spring_length(model.fabric)) {
   if (!(std::isfinite(stiffness_N_m) && stiffness_N_m > 0.0))
     throw std::invalid_argument("edge contact: the penalty's stiffness must be positive and finite");
   const double spring = mean_surface_spring_length(model.fabric);
@@ -268,7 +278,7 @@ EdgeContact::SpringPenalty EdgeContact::spring_penalty(const Model& model, int s
       reach->direction = turn * reach->direction;
       reach->weight_gradient_a = turn * reach->weight_gradient_a;
       reach->weight_gradient_b = turn * reach->weight_gradient_b;
-      const EdgePenalty p = edge_penalty(*reach, stiffness_N_m_);
+      const EdgePenalty p = edge_penalty(*reach, stiffness_N_m_, onset_m_);
       total.energy += p.energy;
       total.gradient_a += p.gradient_a;
       total.gradient_b += p.gradient_b;
@@ -338,7 +348,7 @@ void EdgeContact::add_stiffness(const Model& model, const Positions& x, Stiffnes
   }
   sink.add_each(springs.size(), [&](std::size_t i, StiffnessSink& part) {
     for (const EdgeReach& r : reaches[i]) {
-      const Eigen::Matrix3d ggT = stiffness_N_m_ * r.weight * r.direction * r.direction.transpose();
+      const Eigen::Matrix3d ggT = edge_penalty(r, stiffness_N_m_, onset_m_).curvature * r.direction * r.direction.transpose();
       const double s = r.along;
       part.add(springs[i].a, springs[i].a, (1.0 - s) * (1.0 - s) * ggT);
       part.add(springs[i].b, springs[i].b, s * s * ggT);

@@ -91,10 +91,10 @@ TEST(EdgeContact, ThePenaltysGradientIsItsEnergysDerivative) {
         const Eigen::Vector3d p = a + reach->along * (b - a);
         const double to_end = std::min(p.y(), 1.0 - p.y());
         if (ends.capped_from && std::abs(to_end - wedge_depth(edge, p)) < 1e-4) continue;  // at the switch
-        const EdgePenalty penalty = edge_penalty(*reach, stiffness);
+        const EdgePenalty penalty = edge_penalty(*reach, stiffness, 0.01);
         const auto energy = [&](const Eigen::Vector3d& pa, const Eigen::Vector3d& pb) {
           const auto r = reach_under_edge(edge, pa, pb, ends);
-          return r ? edge_penalty(*r, stiffness).energy : 0.0;
+          return r ? edge_penalty(*r, stiffness, 0.01).energy : 0.0;
         };
         const double scale = penalty.gradient_a.norm() + penalty.gradient_b.norm();
         for (int axis = 0; axis < 3; ++axis) {

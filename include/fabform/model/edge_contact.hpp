@@ -4,15 +4,17 @@
 // a sharp edge passes under it, through the corner. Here each warp, weft and shear spring is also
 // kept out of the wedge under every convex edge sharper than a body's `edge_contact_deg`, by a
 // penalty on how deep it reaches into the wedge:
-//   Π = ½ κ w δ²  for δ > 0,
+//   Π = w φ(δ),  φ(δ) = κδ³/(6h) for 0 < δ < h, κ(δ²/2 − hδ/2 + h²/6) beyond,
 // δ the depth below the edge's two faces of the point where the spring crosses the wedge's
 // bisecting plane (the deepest point of a straight segment in a wedge; seed 003's cut), w a weight
-// that is 1 along the edge and falls smoothly to 0 within a margin beyond its ends (so that the
-// energy is C¹ where a spring leaves one edge for the next), κ a stiffness far above the
-// fabric's. Unlike a spring wrapped over an edge (edge_wrap.hpp), whose path jumps from edge to
-// edge, Π has a continuous gradient, so Newton converges on faceted CAD parts. A spring that
-// reaches in by δ pushes out with κ w δ: κ is 1000 springs' stiffness at rest, so the 0.1 mm an
-// engineer tolerates is a force of 100 springs' tension at 100 % strain over a 3 mm spring.
+// that is 1 along the edge and falls smoothly to 0 within a margin past an end the body goes on
+// past (so that the energy is C¹ where a spring leaves one edge for the next), κ a stiffness far
+// above the fabric's, reached over a depth h of 2 % of a spring, so that Newton's matrix changes
+// continuously as a spring reaches under. Unlike a spring wrapped over an edge (edge_wrap.hpp),
+// whose path jumps from edge to edge, Π has a continuous gradient, so Newton converges on faceted
+// CAD parts. A spring that reaches in by δ > h pushes out with κ w (δ − h/2): κ is 1000 springs'
+// stiffness at rest, so the 0.1 mm an engineer tolerates is a force of 100 springs' tension at
+// 100 % strain over a 3 mm spring.
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,13 +54,14 @@ struct EdgeEnds {
 std::optional<EdgeReach> reach_under_edge(const SharpEdge& edge, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                           const EdgeEnds& ends);
 
-/// ½ κ w δ² of a reach, and its gradient with respect to a and b.
+/// w φ(δ) of a reach (h = onset_m), its gradient with respect to a and b, and w φ''(δ).
 struct EdgePenalty {
   double energy = 0.0;
+  double curvature = 0.0;  // w φ''(δ)
   Eigen::Vector3d gradient_a = Eigen::Vector3d::Zero();
   Eigen::Vector3d gradient_b = Eigen::Vector3d::Zero();
 };
-EdgePenalty edge_penalty(const EdgeReach& reach, double stiffness_N_m);
+EdgePenalty edge_penalty(const EdgeReach& reach, double stiffness_N_m, double onset_m);
 
 class EdgeContact final : public Term {
  public:
@@ -77,7 +80,7 @@ class EdgeContact final : public Term {
   double energy(const Model& model, const Positions& x) const override;
   double node_energy_change(const Model& model, const Positions& x, int node,
                             const Eigen::Vector3d& at) const override;
-  /// κ w J Jᵀ per reach, J = ∂δ/∂(a, b): the Gauss–Newton part, positive semi-definite.
+  /// w φ''(δ) J Jᵀ per reach, J = ∂δ/∂(a, b): the Gauss–Newton part, positive semi-definite.
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
   std::string refusal(const std::string& solver) const override;
 
@@ -111,6 +114,7 @@ class EdgeContact final : public Term {
   std::vector<BodyEdges> bodies_;
   double stiffness_N_m_;
   double margin_m_;  // how far beyond an edge's ends its weight falls to 0
+  double onset_m_;   // the depth over which the penalty's stiffness rises to κ
 };
 
 }  // namespace fabform
