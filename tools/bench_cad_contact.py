@@ -29,19 +29,20 @@ A case is clean when result.json says converged at every load step, its residual
 1e-5 N and figures.deepest_spring_cut_m at most 1e-4 m. It prints a table of the cases and per
 variant the fraction clean, the median iterations and the median over cases of the time ratio
 to the nodes run of the same case (where that one converged), and writes them into
-OUT/summary.json.
+OUT/summary.json. A case whose load steps fabform had to cut (halve, `[solver] max_step_cuts`)
+says how many cuts beside its termination.
 
 Usage (after tools/setup.sh):
   /usr/bin/python3 tools/bench_cad_contact.py                        # the whole sweep: 72 cases a variant
   /usr/bin/python3 tools/bench_cad_contact.py --quick --variants nodes,wrap --jobs 2
   /usr/bin/python3 tools/bench_cad_contact.py --parts featuretype --variants nodes,edges
---quick runs one resolution (40) and the part as is only. --target names the variant the target
-is about (default edges; it needs nodes among --variants for the ratio). A case still running
-after --timeout seconds is stopped (SIGTERM: fabform writes what it has, "interrupted") and is not
-clean. Writes into --out (default results/bench_cad_contact). Exit status 0 when the target is
-met, 1 when not, 2 on bad input or a case fabform refused or failed to run (its message is in
-the table). Standard library only. FABFORM_BINARY names the fabform to run (default
-build/fabform).
+--quick runs one resolution (40) and the part as is only; --modes punch (or die) one mode.
+--target names the variant the target is about (default edges; it needs nodes among --variants
+for the ratio). A case still running after --timeout seconds is stopped (SIGTERM: fabform writes
+what it has, "interrupted") and is not clean. Writes into --out (default
+results/bench_cad_contact). Exit status 0 when the target is met, 1 when not, 2 on bad input or
+a case fabform refused or failed to run (its message is in the table). Standard library only.
+FABFORM_BINARY names the fabform to run (default build/fabform).
 """
 import argparse
 import concurrent.futures
@@ -215,7 +216,8 @@ def run_case(case: dict, out: pathlib.Path, timeout: float) -> dict:
                message=result.get("message", ""), converged=every_step,
                iterations=result.get("iterations"), solve_seconds=result.get("solve_seconds"),
                residual_N=residual, deepest_cut_m=cut,
-               steps_done=len(steps) if steps is not None else None)
+               steps_done=len(steps) if steps is not None else None,
+               cuts=sum(s.get("cuts", 0) for s in steps) if steps is not None else None)
     row["clean"] = bool(every_step and not timed_out and residual is not None and residual <= TOLERANCE_N
                         and cut is not None and cut <= MAX_CUT_M)
     return row
@@ -226,6 +228,8 @@ def cells(row: dict) -> str:
         return "–" if x is None else format(x, fmt)
     cut = row.get("deepest_cut_m")
     termination = row["termination"] if row["ran"] else f"{row['termination']}: {row['message']}"
+    if row.get("cuts"):
+        termination += f" ({row['cuts']} step cuts)"   # load steps fabform halved to get through
     return (f"| {row['part']} | {row['mode']} | {row['res']} | {row['orientation']} | {row['mu']:g} | "
             f"{row['variant']} | {'yes' if row['clean'] else 'no'} | {termination} | "
             f"{num(row.get('iterations'), 'd')} | {num(row.get('solve_seconds'), '.2f')} | "

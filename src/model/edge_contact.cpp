@@ -48,13 +48,28 @@ CellKey cell_key(const Eigen::Vector3i& c) {
   return (part(c.x()) << 42) | (part(c.y()) << 21) | part(c.z());
 }
 
-// Whether the body goes on past an edge's end, within the edge's wedge: a point just past the end
-// and just under the edge lies inside it (a long CAD edge cut in pieces, a fillet's facets, a
-// pocket's rim round its corner), or the body ends there (a box's corner). Probed this share of
-// the shorter of the edge and the margin away.
+// Whether the body goes on past an edge's end, within the edge's wedge: another edge there runs
+// on between faces turned alike (a long CAD edge cut in pieces, along its cracks too; a fillet's
+// facets), or a point just past the end and just under the edge lies inside the body (a pocket's
+// rim round its corner); else the body ends there (a box's corner). Probed this share of the
+// shorter of the edge and the margin away.
 constexpr double kProbeShare = 0.05;
+constexpr double kAlikeCos = 0.866;  // faces within 30° of each other's
 
-bool goes_on_past(const RigidBody& body, const SharpEdge& edge, bool from_end, double margin_m) {
+bool continued_by(const SharpEdge& edge, bool from_end, const SharpEdge& other) {
+  const auto alike = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v) { return u.dot(v) > kAlikeCos; };
+  const bool faces = (alike(edge.normal_a, other.normal_a) && alike(edge.normal_b, other.normal_b)) ||
+                     (alike(edge.normal_a, other.normal_b) && alike(edge.normal_b, other.normal_a));
+  const Eigen::Vector3d& end = from_end ? edge.from : edge.to;
+  const Eigen::Vector3d past = from_end ? edge.from - edge.to : edge.to - edge.from;
+  const Eigen::Vector3d on = other.from == end ? other.to - other.from : other.from - other.to;
+  return faces && (other.from == end || other.to == end) && past.dot(on) > 0.0;
+}
+
+bool goes_on_past(const RigidBody& body, const std::vector<SharpEdge>& edges, const SharpEdge& edge, bool from_end,
+                  double margin_m) {
+  for (const SharpEdge& other : edges)
+    if (&other != &edge && continued_by(edge, from_end, other)) return true;
   const Eigen::Vector3d end = from_end ? edge.from : edge.to;
   const Eigen::Vector3d past = (from_end ? edge.from - edge.to : edge.to - edge.from).normalized();
   const Eigen::Vector3d under = -(edge.normal_a + edge.normal_b).normalized();
@@ -65,7 +80,8 @@ bool goes_on_past(const RigidBody& body, const SharpEdge& edge, bool from_end, d
 std::vector<EdgeEnds> edge_ends(const RigidBody& body, const std::vector<SharpEdge>& edges, double margin_m) {
   std::vector<EdgeEnds> ends;
   for (const SharpEdge& edge : edges)
-    ends.push_back({!goes_on_past(body, edge, true, margin_m), !goes_on_past(body, edge, false, margin_m), margin_m});
+    ends.push_back({!goes_on_past(body, edges, edge, true, margin_m), !goes_on_past(body, edges, edge, false, margin_m),
+                    margin_m});
   return ends;
 }
 
