@@ -38,12 +38,12 @@ MPI_TESTS=(AmgConjugateGradient LinearSolver AlgebraicMultigrid)
 #   resume between the cup's load steps (SIGKILL's resume reads the same checkpoint, the shipped
 #   cup takes the steps) and the shipped dome (the multigrid Newton steps run on smaller domes):
 #   together 4.4 minutes of the shards' 20 on CI's two cores;
-# - the shipped CAD punch, twice over ten load steps (EdgeContact's tests run the penalty).
+# - the shipped CAD punch, twice over ten load steps, and die (EdgeContact's tests run the penalty).
 SLOW_TESTS='*ThousandByThousand*:*MultigridNewtonOnTheDome*:*MultigridStepsThatStagnate*'
 SLOW_TESTS+=':*LatticeMultigrid.IterationsDoNotGrowWithTheGrid*:*ConvergesOnTheBodyWithoutEnteringIt/mold*'
 SLOW_TESTS+=':*KeepsTheSurfaceAndTheBoundingBox*:*StepDivisorC*:*RunResume.*/Sigterm*'
 SLOW_TESTS+=':*FoldCountComesFromTheFabricNotTheMesh*:*LobedOutlineHasAFoldPerLobe/quadrangular80*'
-SLOW_TESTS+=':*RunResumeInSteps.*:*ConvergesOnTheBodyWithoutEnteringIt/dome*:*ShippedCadPunch*'
+SLOW_TESTS+=':*RunResumeInSteps.*:*ConvergesOnTheBodyWithoutEnteringIt/dome*:*ShippedCadPunch*:*ShippedCadDie*'
 
 # The rest run inside one process per core, gtest's shards: a process per test, as ctest runs
 # them, spent about 0.55 s starting each sanitized process, and the pass took 27 minutes on CI's
