@@ -333,7 +333,7 @@ def main() -> int:
         ratios = []
         for r in mine:
             reference = nodes.get((r["part"], r["mode"], r["res"], r["orientation"], r["mu"]))
-            if (r["ran"] and reference and reference["converged"] and reference["solve_seconds"]
+            if (r["ran"] and reference and reference.get("converged") and reference["solve_seconds"]
                     and r.get("solve_seconds") is not None):
                 ratios.append(r["solve_seconds"] / reference["solve_seconds"])
         ratio = statistics.median(ratios) if ratios else None

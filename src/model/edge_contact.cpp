@@ -262,19 +262,20 @@ constexpr double kSlackShare = 0.25;
 const std::vector<int>& EdgeContact::edges_near(const BodyEdges& body, int spring, const Eigen::Vector3d& pa,
                                                 const Eigen::Vector3d& pb, bool refresh,
                                                 std::vector<int>& fresh) const {
+  fresh.clear();
+  if (!pa.allFinite() || !pb.allFinite()) return fresh;  // a broken state, being measured
   const double length = (pb - pa).norm();
-  NearEdges* cached = spring >= 0 ? &body.cache[static_cast<std::size_t>(spring)] : nullptr;
-  if (cached && !refresh && cached->valid && (pa - cached->a).norm() <= cached->slack &&
-      (pb - cached->b).norm() <= cached->slack)
-    return cached->edges;
+  NearEdges& cached = body.cache[static_cast<std::size_t>(spring)];
+  if (!refresh && cached.valid && (pa - cached.a).norm() <= cached.slack && (pb - cached.b).norm() <= cached.slack)
+    return cached.edges;
   // The deepest point of a cut lies within the spring's length of it.
   double reach_m = std::max(length, margin_m_);
-  const double slack = refresh && cached ? kSlackShare * length : 0.0;
+  const double slack = refresh ? kSlackShare * length : 0.0;
   reach_m += 3.0 * slack;  // covers a spring up to 2·slack longer, its ends `slack` away
   fresh = body.near(pa.cwiseMin(pb).array() - reach_m, pa.cwiseMax(pb).array() + reach_m);
-  if (!refresh || !cached) return fresh;
-  *cached = NearEdges{pa, pb, slack, true, fresh};
-  return cached->edges;
+  if (!refresh) return fresh;
+  cached = NearEdges{pa, pb, slack, true, fresh};
+  return cached.edges;
 }
 
 EdgeContact::SpringPenalty EdgeContact::spring_penalty(const Model& model, int spring, const Eigen::Vector3d& a,

@@ -41,7 +41,7 @@ void RunMonitor::observe(const IterationRecord& record) {
     so_far_.history.push_back(record);
     if (record.iteration > 0) ++iterations_since_checkpoint_;  // iteration 0 measures a start
   }
-  if (checkpoint_due()) checkpoint();
+  if (!record.inside_cut && checkpoint_due()) checkpoint();
 }
 
 void RunMonitor::checkpoint() {

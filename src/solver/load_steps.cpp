@@ -57,20 +57,6 @@ void put_overlapped_on_surface(const Model& model, SolverState& state) {
   }
 }
 
-// Whether a node resting on a travelling body lies inside it by more than rounding explains (a
-// thousand times the distance within which a point lies on its surface): the state was solved
-// with the body standing elsewhere.
-bool resting_nodes_inside(const Model& model, const SolverState& state) {
-  for (int k = 0; k < model.node_count(); ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    const int b = state.contact[i].body;
-    if (b < 0 || static_cast<std::size_t>(b) >= model.paths.size() || !model.paths[b].moves()) continue;
-    const RigidBody& body = model.bodies[static_cast<std::size_t>(b)];
-    if (body.closest(state.x[i]).signed_distance < -1000.0 * body.on_surface_distance()) return true;
-  }
-  return false;
-}
-
 // The summary a step's solver starts from: the step's own records when the run resumes inside
 // it, else none, with the seconds of the steps before so that time runs on.
 Summary step_start(const std::vector<IterationRecord>& history, int step, double seconds_before) {
@@ -132,13 +118,11 @@ class LoadStep {
     }
     // The first attempt is the step as it always was solved: the same start, the same cap.
     Summary start = step_start(run_.history, step_, run_.seconds);
-    // Resumed with the step's records past the cap, the step had been cut when the checkpoint
-    // was written: at its end (its rest, which re-finishes at once: it is given one iteration
-    // beyond them, for a position check) or inside a cut, at a state solved for a fractional
-    // pose, which a checkpoint cannot resume (limitation). Such a state shows as nodes resting
-    // inside the body now at the whole pose, or as a state that does not re-finish at once.
+    // Resumed with the step's records past the cap, the step had been cut, and the checkpoint
+    // was written at its end (none is written inside a cut: IterationRecord::inside_cut), at its
+    // rest, which re-finishes at once: it is given one iteration beyond them, for a position
+    // check. One that does not was written as the whole step reached its cap, before the cut.
     const bool cut_before = resumed && spec_.max_step_cuts > 0 && start.iterations >= cap_;
-    if (cut_before && resting_nodes_inside(model_, state_)) return refuse_inside_cut(start);
     const Summary whole =
         cut_before ? attempt(capped(start.iterations + 1LL), std::move(start)) : attempt(spec_, std::move(start));
     if (whole.converged()) return true;
@@ -179,14 +163,14 @@ class LoadStep {
  private:
   using Bodies = std::vector<Eigen::Isometry3d>;
 
-  // Ends the run that resumed a checkpoint written inside a cut, `where` the summary it stands at.
+  // Ends the run that resumed a checkpoint written as the whole step failed, before its cut.
   bool refuse_inside_cut(const Summary& where) {
     run_.termination = Termination::not_converged;
     run_.converged_on = StopCriterion::none;
     run_.residual_N = where.residual_N;
     run_.message = "load step " + std::to_string(step_) + " of " + std::to_string(steps_) +
-                   ": the checkpoint was written while the step was being cut, and a cut step cannot be resumed "
-                   "inside its cuts: run the scene again without --resume";
+                   ": the checkpoint was written as the step failed whole, before it was cut, which a checkpoint "
+                   "cannot resume: run the scene again without --resume";
     return false;
   }
 
@@ -219,7 +203,7 @@ class LoadStep {
     Summary start = step_start(run_.history, step_, run_.seconds);
     start.seconds = run_.seconds;
     const int counted = start.iterations;
-    const Summary done = attempt(capped(static_cast<long long>(counted) + cap_), std::move(start));
+    const Summary done = attempt(capped(static_cast<long long>(counted) + cap_), std::move(start), true);
     cuts_.smallest_fraction = std::min(cuts_.smallest_fraction, to - from);
     if (done.converged()) return true;
     failed_from_ = from, failed_to_ = to;
@@ -235,12 +219,13 @@ class LoadStep {
   }
 
   // Solves from `start` with `spec`, the records numbered within the step.
-  Summary attempt(const SolverSpec& spec, Summary start) {
+  Summary attempt(const SolverSpec& spec, Summary start, bool inside_cut = false) {
     run_.history.erase(std::remove_if(run_.history.begin(), run_.history.end(),
                                       [&](const IterationRecord& r) { return r.step == step_; }),
                        run_.history.end());
     const Summary done = fabform::solve(model_, state_, spec, [&](IterationRecord r) {
       r.step = step_;
+      r.inside_cut = inside_cut;
       if (observer_) observer_(r);
     }, std::move(start));
     for (IterationRecord r : done.history) r.step = step_, run_.history.push_back(r);

@@ -135,8 +135,8 @@ TEST(ShippedCup, FormsADeepCupStepByStep) {
   EXPECT_GT(draw_in(model, state.x).max_m, 0.005);
 }
 
-// Forming over a CAD part (issue "Forming over the CAD part a user brings"): the shipped scene
-// at a third of its resolution, so that a test can afford it. Every step converges with newton
+// Forming over a CAD part: the shipped scene at half its divisions (a quarter of its nodes), so
+// that a test can afford it. Every step converges with newton
 // and no spring reaches into the part deeper than 0.1 mm, measured by the spring cuts' own search
 // of the body's signed distance along each spring (spring_cuts.hpp), which knows nothing of the
 // penalty; with node-only contact the same run ends with springs through the part's edges.

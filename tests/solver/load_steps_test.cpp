@@ -7,8 +7,10 @@
 // resumed from its checkpoint ends bit for bit where the whole run ends.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <vector>
 
 #include "fabform/geometry/rigid_body.hpp"
 #include "fabform/fabric/spring.hpp"
@@ -333,38 +335,24 @@ TEST(LoadSteps, InterruptedWhileCuttingResumesFromTheStepsStart) {
   for (std::size_t k = 0; k < whole_state.x.size(); ++k) EXPECT_EQ(taken_up.state.x[k], whole_state.x[k]) << k;
 }
 
-// Limitation: a checkpoint written while a step was being cut (every K iterations, the run then
-// killed) holds a state solved for a fractional pose; resuming it ends the run unconverged,
-// saying so, rather than going on from a state the bodies no longer stand at: one written in
-// the middle of a half, and one written as the first half converged (which the records cannot
-// tell from the step's end: the nodes resting inside the body at the step's whole pose do).
-TEST(LoadSteps, ACheckpointWrittenInsideACutIsNotResumed) {
+// A checkpoint holds a state at a whole pose; inside a cut the bodies stand at a part of the
+// step, so the monitor writes none there, however often it is asked to (every iteration here):
+// the step's last checkpoint before its end is its whole attempt's.
+TEST(LoadSteps, NoCheckpointIsWrittenInsideACut) {
   Model model = taut_strip(2);
   SolverState state = SolverState::at_start(model);
-  Checkpoint inside;
-  Checkpoint half_done;
+  std::vector<int> written;  // step 2's iterations checkpointed
   RunMonitor monitor(state, {}, CheckpointSpec{1, 0.0},
-                     [&](const SolverState& s, const Summary& so_far) {
-                       const IterationRecord& last = so_far.history.back();
-                       if (last.step == 2 && last.iteration == kCutCap + 3) inside = Checkpoint{s, so_far};
-                       if (last.step == 2 && last.residual_N <= 1e-9 && half_done.summary.history.empty())
-                         half_done = Checkpoint{s, so_far};
+                     [&](const SolverState&, const Summary& so_far) {
+                       if (so_far.history.back().step == 2) written.push_back(so_far.history.back().iteration);
                      },
                      nullptr);
   const Summary run =
       solve_in_steps(model, state, capped_spec(4), [&](const IterationRecord& r) { monitor.observe(r); }, {});
   ASSERT_TRUE(run.converged()) << run.message;
-  ASSERT_FALSE(inside.summary.history.empty());
-  ASSERT_FALSE(half_done.summary.history.empty());
-  ASSERT_LT(half_done.summary.history.back().iteration, run.history.back().iteration);  // not the step's end
-
-  for (Checkpoint* c : {&inside, &half_done}) {
-    Model again = taut_strip(2);
-    const Summary s = solve_in_steps(again, c->state, capped_spec(4), {}, {}, c->summary);
-    EXPECT_EQ(s.termination, Termination::not_converged);
-    EXPECT_EQ(s.message.rfind("load step 2 of 2: the checkpoint was written while the step was being cut", 0), 0u)
-        << s.message;
-  }
+  ASSERT_GT(run.history.back().iteration, kCutCap);  // step 2 was cut
+  ASSERT_FALSE(written.empty());
+  EXPECT_LE(*std::max_element(written.begin(), written.end()), kCutCap);
 }
 
 }  // namespace

@@ -11,10 +11,11 @@
 // past (so that the energy is C¹ where a spring leaves one edge for the next), κ a stiffness far
 // above the fabric's, reached over a depth h of 2 % of a spring, so that Newton's matrix changes
 // continuously as a spring reaches under. Unlike a spring wrapped over an edge (edge_wrap.hpp),
-// whose path jumps from edge to edge, Π has a continuous gradient, so Newton converges on faceted
-// CAD parts. A spring that reaches in by δ > h pushes out with κ w (δ − h/2): κ is 1000 springs'
-// stiffness at rest, so the 0.1 mm an engineer tolerates is a force of 100 springs' tension at
-// 100 % strain over a 3 mm spring.
+// whose path jumps from edge to edge, Π has a continuous gradient (but where a corner's cap takes
+// over from the wedge, and at the cut-off a spring's length from the edge), so Newton converges
+// on faceted CAD parts. A spring that reaches in by δ > h pushes out with κ w (δ − h/2): κ is
+// 1000 times the softest spring's stiffness at rest, so a 3 mm spring 0.1 mm under pushes out
+// with what 23 springs carry at 100 % strain.
 #include <optional>
 #include <string>
 #include <vector>
@@ -95,8 +96,8 @@ class EdgeContact final : public Term {
     Eigen::Vector3d gradient_b = Eigen::Vector3d::Zero();
   };
   bool covers(const Model& model, int spring) const;
-  // The edges spring `spring` (-1: none in particular) between pa and pb (in the body's placed
-  // frame) may reach under; `refresh` looks them up anew and keeps them (edge_contact.cpp).
+  // The edges spring `spring` between pa and pb (in the body's placed frame) may reach under;
+  // `refresh` looks them up anew and keeps them (edge_contact.cpp).
   struct NearEdges {
     Eigen::Vector3d a = Eigen::Vector3d::Zero();
     Eigen::Vector3d b = Eigen::Vector3d::Zero();

@@ -21,6 +21,9 @@ struct IterationRecord {
   double seconds = 0.0;     // since the solve started
   int contact_nodes = 0;
   int step = 0;  // the load step (load_steps.hpp) it belongs to; 0 for a run without travel
+  // Made while its load step was being cut: the bodies stand at a part of the step, a pose a
+  // checkpoint cannot record, so none is written from it.
+  bool inside_cut = false;
 };
 
 // Which tolerance a converged run met: e in newtons, or the distance from the rest in metres.
