@@ -249,10 +249,6 @@ std::string EdgeContact::describe(const Model& model) const {
   return "edge contact: warp, weft and shear springs kept out from under the convex edges of " + bodies + text;
 }
 
-bool EdgeContact::covers(const Model& model, int spring) const {
-  return stretches_surface(model.fabric.springs()[static_cast<std::size_t>(spring)].kind);
-}
-
 // The edges a spring may reach under are looked up once per Newton step (add_stiffness), in a
 // box wider by kSlackShare of its length on every side; until either end has moved farther than
 // that from where it was, the list holds every edge a fresh lookup would find (and a few more,
@@ -309,8 +305,8 @@ Eigen::Vector3d EdgeContact::force_at(const Model& model, const Positions& x, in
                                       const Eigen::Vector3d& at) const {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   for (const int s : model.fabric.springs_at(node)) {
-    if (!covers(model, s)) continue;
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
+    if (!stretches_surface(spring.kind)) continue;
     const bool is_a = spring.a == node;
     const Eigen::Vector3d& a = is_a ? at : x[static_cast<std::size_t>(spring.a)];
     const Eigen::Vector3d& b = is_a ? x[static_cast<std::size_t>(spring.b)] : at;
@@ -342,8 +338,8 @@ double EdgeContact::node_energy_change(const Model& model, const Positions& x, i
                                        const Eigen::Vector3d& at) const {
   double change = 0.0;
   for (const int s : model.fabric.springs_at(node)) {
-    if (!covers(model, s)) continue;
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
+    if (!stretches_surface(spring.kind)) continue;
     const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
     const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
     const double before = spring_penalty(model, s, a, b).energy;

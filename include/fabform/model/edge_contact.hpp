@@ -95,7 +95,6 @@ class EdgeContact final : public Term {
     Eigen::Vector3d gradient_a = Eigen::Vector3d::Zero();
     Eigen::Vector3d gradient_b = Eigen::Vector3d::Zero();
   };
-  bool covers(const Model& model, int spring) const;
   // The edges spring `spring` between pa and pb (in the body's placed frame) may reach under;
   // `refresh` looks them up anew and keeps them (edge_contact.cpp).
   struct NearEdges {
