@@ -1,10 +1,12 @@
 #include "fabform/model/edge_contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -66,11 +68,17 @@ bool continued_by(const SharpEdge& edge, bool from_end, const SharpEdge& other) 
   return faces && (other.from == end || other.to == end) && past.dot(on) > 0.0;
 }
 
-bool goes_on_past(const RigidBody& body, const std::vector<SharpEdge>& edges, const SharpEdge& edge, bool from_end,
-                  double margin_m) {
-  for (const SharpEdge& other : edges)
-    if (&other != &edge && continued_by(edge, from_end, other)) return true;
+// The edges that end at each point, by its coordinates (a mesh's edges share their vertices').
+using EdgesAt = std::map<std::array<double, 3>, std::vector<int>>;
+
+std::array<double, 3> point_key(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+
+bool goes_on_past(const RigidBody& body, const std::vector<SharpEdge>& edges, const EdgesAt& at, int index,
+                  bool from_end, double margin_m) {
+  const SharpEdge& edge = edges[static_cast<std::size_t>(index)];
   const Eigen::Vector3d end = from_end ? edge.from : edge.to;
+  for (const int other : at.at(point_key(end)))
+    if (other != index && continued_by(edge, from_end, edges[static_cast<std::size_t>(other)])) return true;
   const Eigen::Vector3d past = (from_end ? edge.from - edge.to : edge.to - edge.from).normalized();
   const Eigen::Vector3d under = -(edge.normal_a + edge.normal_b).normalized();
   const double probe = kProbeShare * std::min((edge.to - edge.from).norm(), margin_m);
@@ -78,9 +86,14 @@ bool goes_on_past(const RigidBody& body, const std::vector<SharpEdge>& edges, co
 }
 
 std::vector<EdgeEnds> edge_ends(const RigidBody& body, const std::vector<SharpEdge>& edges, double margin_m) {
+  EdgesAt at;
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
+    at[point_key(edges[static_cast<std::size_t>(e)].from)].push_back(e);
+    at[point_key(edges[static_cast<std::size_t>(e)].to)].push_back(e);
+  }
   std::vector<EdgeEnds> ends;
-  for (const SharpEdge& edge : edges)
-    ends.push_back({!goes_on_past(body, edges, edge, true, margin_m), !goes_on_past(body, edges, edge, false, margin_m),
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e)
+    ends.push_back({!goes_on_past(body, edges, at, e, true, margin_m), !goes_on_past(body, edges, at, e, false, margin_m),
                     margin_m});
   return ends;
 }
