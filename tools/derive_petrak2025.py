@@ -3,7 +3,7 @@
 
 Why: the paper (Sustainability 17(4) 1388, CC BY 4.0) gives six fabrics' KES-FB measurements,
 converted to CLO3D's units, with their measured drape coefficients: what fabform's drape is
-validated against (README, "Drape"). materials/petrak2025/fabrics.csv holds the numbers as
+validated against (docs/drape.md, "Drape"). materials/petrak2025/fabrics.csv holds the numbers as
 transcribed, with their provenance; this script turns them into what fabform reads, so that no
 number is copied by hand.
 
@@ -70,7 +70,7 @@ def study(rows):
     lines = [
         "# Petrak et al. 2025's six woven fabrics (materials/petrak2025/fabrics.csv) on the Cusick tester",
         "# (scenes/cusick_woven.toml), four specimens each at 120 divisions (2.5 mm), where their drapes",
-        "# settle (the scene's 40 do not: README, \"Drape\"): fabform's drape coefficients, to compare with",
+        "# settle (the scene's 40 do not: docs/drape.md, \"Drape\"): fabform's drape coefficients, to compare with",
         "# the measured ones (tools/drape_against_measured.py DIR). Written by tools/derive_petrak2025.py.",
         "",
         "[study]",

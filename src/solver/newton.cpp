@@ -61,7 +61,7 @@ constexpr double kMeasuringForcing = 1e-4;
 // ... except the final estimate after loose steps, the step over the residual's rate: solved to
 // this, its size was within 6 % of the one solved to kMeasuringForcing on the dome at N = 401
 // and 0.05 % at N = 1001, in 6 and 4 conjugate-gradient iterations against 16 and 17 (a third
-// of the last grid's solve at N = 1001: README, "How far from the rest").
+// of the last grid's solve at N = 1001: docs/running.md, "How far from the rest").
 constexpr double kEstimateForcing = 1e-2;
 
 // How tightly a step is solved: to the inexact-Newton sequence's η (NewtonStep::forcing) capped

@@ -79,7 +79,7 @@ TEST(Cantilever, BendingFrictionHoldsTheTipAsTheLoadingBranchPredicts) {
 }
 
 // c = L/2: the standard's 41.5°. fabform's hinges, quadratic in the bend vector, droop 0.8°
-// more on the way there (softer; README, "Lab units"); the tolerance is 2.5 % of the angle.
+// more on the way there (softer; docs/lab-units.md, "Lab units"); the tolerance is 2.5 % of the angle.
 TEST(Cantilever, BendingLengthPutsTheTipOnTheStandardsLine) {
   EXPECT_NEAR(extrapolated_angle_deg(5.0), 41.5, 0.025 * 41.5);
 }

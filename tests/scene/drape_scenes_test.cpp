@@ -125,7 +125,7 @@ TEST(CusickDrape, BucklingKeepsTheAreaThatTensionOnlyLoses) {
 // (near 9 folds the drape has several rests of nearly equal energy: one seed gives 8 folds on a
 // mesh, the next 10), so the count is held as a tester reports it, over specimens: four of each
 // mesh, seeds 1 to 4, every one folding at least 7 times and the three meshes' mean counts within
-// 1 of each other (README, "Drape": more specimens and a refinement, by tools/drape_meshes.py).
+// 1 of each other (docs/drape.md, "Drape": more specimens and a refinement, by tools/drape_meshes.py).
 TEST(CusickDrape, FoldCountComesFromTheFabricNotTheMesh) {
   using Mesh = FabricSpec::Mesh;
   constexpr int kSpecimens = 4;

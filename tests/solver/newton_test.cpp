@@ -222,7 +222,7 @@ TEST(Newton, LockedAxesNeverMove) {
 // Near a regular rest, with the contact set settled, Newton's steps converge quadratically
 // (Nocedal & Wright, Numerical Optimization, Theorem 3.5): each step about squares the residual.
 // The mold scene's knit is taut over the pad, its springs wrapped over the pad's edges, so its
-// rest is regular (the dome's is not: slack corners, README "Starting on the surface"). A step's order
+// rest is regular (the dome's is not: slack corners, docs/speed.md "Starting on the surface"). A step's order
 // log(r₊/r)/log(r/r₋) is about 2 where the convergence is quadratic and 1 where it is linear (the
 // dome's tail); one of the last three steps must reach 1.8. Not every one: a step is spoilt by
 // the contact set still changing (with OpenBLAS's Nehalem kernels the run holds near 1e-6 N for

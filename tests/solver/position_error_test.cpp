@@ -260,7 +260,7 @@ TEST(PositionError, NewtonEstimateOnTheDomeIsWithinAFactorOfThreeOfTheMeasuredDi
 // Checked on the 101 × 101 dome at 1e-5 and 1e-6 N and on the 81 × 81 one at 1e-5 N. (On the
 // 81 × 81 dome at 1e-6 N the estimate depends on the path: 1.25 × the distance in this version,
 // 0.23 × in a build that summed the coarse matrices otherwise, its exact steps crossing the
-// kinks of springs at the edge of slack; README, "Multigrid instead of the factorisation".)
+// kinks of springs at the edge of slack; docs/speed.md, "Multigrid instead of the factorisation".)
 TEST(PositionError, MultigridNewtonOnTheDomeIsWithinAFactorOfThreeOfTheMeasuredDistance) {
   for (const auto& [divisions, es] : {std::pair{100, std::vector<double>{1e-5, 1e-6}}, std::pair{80, std::vector<double>{1e-5}}}) {
     const DomeRuns dome(divisions, "multigrid");

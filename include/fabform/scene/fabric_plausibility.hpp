@@ -27,7 +27,7 @@ struct FabricValues {
   std::optional<GivenValue> shear_hysteresis_N_m;                                   // 2HG, N/m
 };
 
-/// The range real fabrics span, from gossamer silk to heavy technical cloth (README, "Lab units").
+/// The range real fabrics span, from gossamer silk to heavy technical cloth (docs/lab-units.md, "Lab units").
 struct PlausibleRange {
   double low = 0.0, high = 0.0;
   double shown_scale = 1.0;  // multiplies the SI value into the unit the message shows
