@@ -15,6 +15,7 @@
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/model.hpp"
 #include "fabform/thread_count.hpp"
+#include "model/sum_in_index_order.hpp"
 
 namespace fabform {
 namespace {
@@ -331,20 +332,12 @@ Eigen::Vector3d EdgeContact::force_at(const Model& model, const Positions& x, in
 
 double EdgeContact::energy(const Model& model, const Positions& x) const {
   const std::vector<Spring>& springs = model.fabric.springs();
-  const auto count = static_cast<std::ptrdiff_t>(springs.size());
-  // Per spring in parallel, summed in spring order: the same bits for any thread count.
-  std::vector<double> energies(springs.size(), 0.0);
-#pragma omp parallel for schedule(static) if (count >= kMinParallelItems)
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
+  return sum_in_index_order(static_cast<std::ptrdiff_t>(springs.size()), [&](std::ptrdiff_t i) {
     const Spring& s = springs[static_cast<std::size_t>(i)];
-    if (stretches_surface(s.kind))
-      energies[static_cast<std::size_t>(i)] =
-          spring_penalty(model, static_cast<int>(i), x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)])
-              .energy;
-  }
-  double energy = 0.0;
-  for (const double e : energies) energy += e;
-  return energy;
+    if (!stretches_surface(s.kind)) return 0.0;
+    return spring_penalty(model, static_cast<int>(i), x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)])
+        .energy;
+  });
 }
 
 double EdgeContact::node_energy_change(const Model& model, const Positions& x, int node,

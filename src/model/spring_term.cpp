@@ -12,6 +12,7 @@
 #include "fabform/model/spring_path.hpp"
 #include "fabform/model/wrapped_spring.hpp"
 #include "fabform/thread_count.hpp"
+#include "model/sum_in_index_order.hpp"
 
 namespace fabform {
 namespace {
@@ -90,19 +91,10 @@ Eigen::Vector3d SpringTerm::force_at(const Model& model, const Positions& x, int
 
 double SpringTerm::energy(const Model& model, const Positions& x) const {
   const std::vector<Spring>& springs = model.fabric.springs();
-  const auto count = static_cast<std::ptrdiff_t>(springs.size());
-  // Each spring's energy in parallel, summed in spring order: the same bits for any thread
-  // count, so a line search decides alike on 1 or 2 threads (a reduction's order would not).
-  std::vector<double> energies(springs.size(), 0.0);
-#pragma omp parallel for schedule(static) if (count >= kMinParallelItems)
-  for (std::ptrdiff_t i = 0; i < count; ++i) {
+  return sum_in_index_order(static_cast<std::ptrdiff_t>(springs.size()), [&](std::ptrdiff_t i) {
     const Spring& spring = springs[static_cast<std::size_t>(i)];
-    if (covers(spring.kind))
-      energies[static_cast<std::size_t>(i)] = spring_path_energy(model, spring, at_index(x, spring.a), at_index(x, spring.b));
-  }
-  double energy = 0.0;
-  for (const double e : energies) energy += e;
-  return energy;
+    return covers(spring.kind) ? spring_path_energy(model, spring, at_index(x, spring.a), at_index(x, spring.b)) : 0.0;
+  });
 }
 
 double SpringTerm::node_energy(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const {
