@@ -4,6 +4,7 @@
 
 #include "fabform/geometry/point_grid.hpp"
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/seam.hpp"
 #include "fabform/model/spring_path.hpp"
 #include "fabform/model/wrapped_spring.hpp"
 
@@ -91,14 +92,27 @@ ContactPressure contact_pressure(const Model& model, const std::vector<Eigen::Ve
   std::vector<int> pressing;
   std::vector<double> reach;
   NearbyQueries queries(model.bodies);
+  // Nodes sewn onto one another are one point of the garment: they press with their reactions
+  // together over their areas together (how the seam's stitches share the reaction between them
+  // is the stitches' business, not the body's).
+  const std::vector<int> sewn = sewn_representatives(model);
+  std::vector<double> lambda(x.size(), 0.0), sewn_lambda(x.size(), 0.0), sewn_area(x.size(), 0.0);
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
     if ((!contact[i] && over_edges[i] == 0.0) || !(area[i] > 0.0)) continue;
-    const double lambda = (contact[i] ? reaction_N(model, x, k, queries) : 0.0) + over_edges[i];
-    p.node_Pa[i] = lambda / area[i];
-    if (lambda > 0.0) force += lambda, contact_area += area[i];  // the mean is over the area that presses
+    lambda[i] = (contact[i] ? reaction_N(model, x, k, queries) : 0.0) + over_edges[i];
+    sewn_lambda[static_cast<std::size_t>(sewn[i])] += lambda[i];
+    sewn_area[static_cast<std::size_t>(sewn[i])] += area[i];
+  }
+  for (int k = 0; k < model.node_count(); ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if ((!contact[i] && over_edges[i] == 0.0) || !(area[i] > 0.0)) continue;
+    const double lambda_i = lambda[i];
+    const auto group = static_cast<std::size_t>(sewn[i]);
+    p.node_Pa[i] = sewn_lambda[group] / sewn_area[group];
+    if (lambda_i > 0.0) force += lambda_i, contact_area += area[i];  // the mean is over the area that presses
     if (p.max_node < 0 || p.node_Pa[i] > p.max_Pa) p.max_Pa = p.node_Pa[i], p.max_node = k;
-    if (lambda > 0.0) pressing.push_back(k), reach.push_back(reach_m(model.fabric, x, k));
+    if (lambda_i > 0.0) pressing.push_back(k), reach.push_back(reach_m(model.fabric, x, k));
   }
   p.mean_Pa = contact_area > 0.0 ? force / contact_area : 0.0;
   for (const RigidBody& body : model.bodies)

@@ -25,10 +25,13 @@ std::string rectangle_reason(const FabricSpec& spec) {
   if (spec.divisions_warp < 1 || spec.divisions_weft < 1) return "fabric divisions must be at least 1";
   if ((spec.divisions_warp + 1LL) * (spec.divisions_weft + 1LL) > kMaxNodes)
     return "fabric has more than 50 million nodes";
+  const int round = spec.tube == FabricSpec::Tube::warp_round ? spec.divisions_warp : spec.divisions_weft;
+  if (spec.tube != FabricSpec::Tube::none && round < 3) return "a tube needs at least 3 divisions round it";
   return "";
 }
 
 std::string circle_reason(const FabricSpec& spec) {
+  if (spec.tube != FabricSpec::Tube::none) return "a tube is a rectangle sewn to itself, not a circle";
   if (spec.width_m != spec.height_m) return "a circle's width and height are its diameter";
   if (spec.mesh == FabricSpec::Mesh::arc) {
     if (spec.rings < 1) return "an arc mesh needs at least 1 ring";
@@ -56,6 +59,15 @@ std::string FabricSpec::invalid_reason() const {
 
 const char* to_string(FabricSpec::Shape shape) {
   return shape == FabricSpec::Shape::rectangle ? "rectangle" : "circle";
+}
+
+const char* to_string(FabricSpec::Tube tube) {
+  switch (tube) {
+    case FabricSpec::Tube::none: return "none";
+    case FabricSpec::Tube::warp_round: return "warp round";
+    case FabricSpec::Tube::warp_along: return "warp along";
+  }
+  return "?";
 }
 
 const char* to_string(FabricSpec::Mesh mesh) {

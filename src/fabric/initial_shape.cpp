@@ -17,6 +17,16 @@ Eigen::Vector3d wrapped(const Fabric& grid, int node, const Eigen::Vector3d& ori
           shape.axis_xy_m.y() + shape.radius_m * std::sin(angle), origin.z() + flat.y()};
 }
 
+// A tube's round direction once round the axis, from its seam at facing_deg.
+Eigen::Vector3d round_tube(const Fabric& grid, int node, const Eigen::Vector3d& origin, const InitialShape& shape) {
+  const Eigen::Vector3d flat = grid.rest_position(node);
+  const bool warp_round = grid.spec().tube == FabricSpec::Tube::warp_round;
+  const double fraction = warp_round ? flat.x() / grid.spec().width_m : flat.y() / grid.spec().height_m;
+  const double angle = (shape.facing_deg + 360.0 * fraction) * kPi / 180.0;
+  return {shape.axis_xy_m.x() + shape.radius_m * std::cos(angle), shape.axis_xy_m.y() + shape.radius_m * std::sin(angle),
+          origin.z() + (warp_round ? flat.y() : flat.x())};
+}
+
 double lift_of(const Fabric& grid, int node, const InitialShape& shape) {
   const Eigen::Vector3d flat = grid.rest_position(node);
   switch (shape.kind) {
@@ -40,7 +50,7 @@ std::string InitialShape::invalid_reason(std::string* field) const {
     return bad("height_m", "must not be zero");
   if (!axis_xy_m.allFinite()) return bad("axis_m", "must be finite");
   if (!std::isfinite(facing_deg)) return bad("facing_deg", "must be finite");
-  if (kind == Kind::wrap && !(std::isfinite(radius_m) && radius_m > 0.0))
+  if ((kind == Kind::wrap || kind == Kind::tube) && !(std::isfinite(radius_m) && radius_m > 0.0))
     return bad("radius_m", "must be positive");
   if (kind == Kind::wrap && !(span_deg > 0.0 && span_deg < 360.0))
     return bad("span_deg", "must be in (0, 360)");
@@ -53,6 +63,7 @@ bool parse_initial_kind(const std::string& name, InitialShape::Kind* kind) {
   else if (name == "lift") *kind = Kind::lift;
   else if (name == "bump") *kind = Kind::bump;
   else if (name == "wrap") *kind = Kind::wrap;
+  else if (name == "tube") *kind = Kind::tube;
   else return false;
   return true;
 }
@@ -65,6 +76,8 @@ std::vector<Eigen::Vector3d> initial_positions(const Fabric& grid,
     auto& x = positions[static_cast<std::size_t>(k)];
     if (shape.kind == InitialShape::Kind::wrap) {
       x = wrapped(grid, k, origin, shape);
+    } else if (shape.kind == InitialShape::Kind::tube) {
+      x = round_tube(grid, k, origin, shape);
     } else {
       x = origin + grid.rest_position(k);
       x.z() += lift_of(grid, k, shape);

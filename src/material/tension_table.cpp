@@ -59,6 +59,14 @@ double TensionTable::tension(double strain) const {
          (b.tension_N_per_m - a.tension_N_per_m) * (strain - a.strain) / (b.strain - a.strain);
 }
 
+double TensionTable::steepest_slope() const {
+  double steepest = 0.0;
+  for (std::size_t i = 1; i < points_.size(); ++i)
+    steepest = std::max(steepest, (points_[i].tension_N_per_m - points_[i - 1].tension_N_per_m) /
+                                      (points_[i].strain - points_[i - 1].strain));
+  return steepest;
+}
+
 double TensionTable::slope(double strain) const {
   if (tension_only_ && strain <= 0.0) return 0.0;
   const std::size_t k = segment_of(strain);

@@ -29,17 +29,6 @@ std::string compression_said(const TensionTable& table) {
   return "";
 }
 
-// The steepest segment of a table (N/m per unit strain); the slack range of a tension-only
-// table has slope 0, and the extended end segments keep their slopes.
-double steepest_slope(const TensionTable& table) {
-  double steepest = 0.0;
-  const auto& p = table.points();
-  for (std::size_t i = 1; i < p.size(); ++i)
-    steepest = std::max(steepest, (p[i].tension_N_per_m - p[i - 1].tension_N_per_m) /
-                                      (p[i].strain - p[i - 1].strain));
-  return steepest;
-}
-
 const Eigen::Vector3d& at_index(const Positions& x, int node) { return x[static_cast<std::size_t>(node)]; }
 
 }  // namespace
@@ -123,7 +112,7 @@ void SpringTerm::add_stiffness(const Model& model, const Positions& x, Stiffness
   std::array<double, 4> slack_slope{};
   for (const SpringKind kind : {SpringKind::warp, SpringKind::weft, SpringKind::shear, SpringKind::bend})
     if (covers(kind) && sink.slack_share() > 0.0)
-      slack_slope[static_cast<std::size_t>(kind)] = sink.slack_share() * steepest_slope(model.table(kind));
+      slack_slope[static_cast<std::size_t>(kind)] = sink.slack_share() * model.table(kind).steepest_slope();
 #pragma omp parallel for schedule(static) if (springs.size() >= kMinParallelItems)
   for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(springs.size()); ++i) {
     const auto k = static_cast<std::size_t>(i);
@@ -158,7 +147,7 @@ void SpringTerm::add_stiffness(const Model& model, const Positions& x, Stiffness
 void SpringTerm::bound_stiffness(const Model& model, StiffnessBound& bound) const {
   for (const Spring& s : model.fabric.springs()) {
     if (!covers(s.kind)) continue;
-    const double k = s.width * steepest_slope(model.table(s.kind)) / s.rest_length;
+    const double k = s.width * model.table(s.kind).steepest_slope() / s.rest_length;
     bound.per_node[static_cast<std::size_t>(s.a)] += k;
     bound.per_node[static_cast<std::size_t>(s.b)] += k;
     bound.stiffest_element = std::max(bound.stiffest_element, k);

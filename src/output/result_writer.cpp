@@ -14,6 +14,7 @@
 #include "fabform/analysis/print_map.hpp"
 #include "fabform/error.hpp"
 #include "fabform/model/force_scale.hpp"
+#include "fabform/model/seam.hpp"
 #include "fabform/output/checkpoint.hpp"
 #include "fabform/io/number_text.hpp"
 #include "fabform/io/obj_text.hpp"
@@ -62,7 +63,8 @@ nlohmann::json fabric_json(const Fabric& fabric) {
   for (const SpringKind kind : {SpringKind::warp, SpringKind::weft, SpringKind::shear, SpringKind::bend})
     springs[to_string(kind)] = std::count_if(fabric.springs().begin(), fabric.springs().end(),
                                              [&](const Spring& s) { return s.kind == kind; });
-  return {{"shape", to_string(fabric.spec().shape)},
+  return {{"shape", fabric.spec().tube != FabricSpec::Tube::none ? "tube" : to_string(fabric.spec().shape)},
+          {"tube", fabric.spec().tube != FabricSpec::Tube::none ? nlohmann::json(to_string(fabric.spec().tube)) : nlohmann::json(nullptr)},
           {"mesh", to_string(fabric.spec().mesh)},
           {"nodes", fabric.node_count()},
           {"faces", fabric.faces().size()},
@@ -186,6 +188,12 @@ std::string result_json(const RunRecord& run, const StateFigures& state, const C
   j["figures"]["stuck_nodes"] = run.check.stuck_nodes;
   forming_json(run, cells, state.pressure, j["figures"]);
   j["fabric"] = fabric_json(run.model.fabric);
+  // Each seam's force per length (N/m) and how far it stands open (m).
+  nlohmann::json seams = nlohmann::json::array();
+  for (const SeamFigures& f : seam_figures(run.model, run.state.x))
+    seams.push_back({{"name", f.name}, {"length_m", number(f.length_m)}, {"tension_mean_N_m", number(f.tension_mean_N_m)},
+                     {"tension_max_N_m", number(f.tension_max_N_m)}, {"gap_max_m", number(f.gap_max_m)}});
+  if (!seams.empty()) j["seams"] = seams;
   if (run.scene.drape.on) {
     j["drape"] = drape_json(run);
     j["drape_coefficient"] = j["drape"].is_null() ? nlohmann::json(nullptr) : j["drape"]["coefficient"];

@@ -13,6 +13,7 @@
 #include "fabform/io/mesh_reader.hpp"
 #include "fabform/material/material_csv.hpp"
 #include "fabform/model/clamp_frame.hpp"
+#include "fabform/model/seam.hpp"
 #include "fabform/model/edge_contact.hpp"
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/gravity.hpp"
@@ -159,6 +160,8 @@ Fabric build_fabric(const Scene& scene) {
 }
 
 std::string fabric_name(const Fabric& fabric) {
+  if (fabric.spec().tube != FabricSpec::Tube::none)
+    return "tube of " + std::to_string(fabric.nodes_warp()) + " x " + std::to_string(fabric.nodes_weft()) + " grid";
   if (fabric.spec().shape == FabricSpec::Shape::rectangle)
     return std::to_string(fabric.nodes_warp()) + " x " + std::to_string(fabric.nodes_weft()) + " grid";
   return std::string(to_string(fabric.spec().mesh)) + " circle of " + std::to_string(fabric.node_count()) +
@@ -440,6 +443,21 @@ void add_wind(const Scene& scene, Model* model) {
   model->terms.push_back(std::make_shared<WindLoad>(Wind{scene.wind.velocity_m_s, scene.wind.coefficient_N_s_m3}));
 }
 
+// A tube's seam: its two edges across the round direction, node for node.
+void add_tube_seam(const Scene& scene, Model* model) {
+  const FabricSpec::Tube tube = scene.fabric.tube;
+  if (tube == FabricSpec::Tube::none) return;
+  const bool round_warp = tube == FabricSpec::Tube::warp_round;
+  NodeSetSpec first, second;
+  first.kind = round_warp ? NodeSetSpec::Kind::edge_left : NodeSetSpec::Kind::edge_bottom;
+  second.kind = round_warp ? NodeSetSpec::Kind::edge_right : NodeSetSpec::Kind::edge_top;
+  Seam seam{"tube", stitches_by_arc_length(model->fabric, select_nodes(model->fabric, first),
+                                           select_nodes(model->fabric, second)),
+            round_warp ? scene.fabric.height_m : scene.fabric.width_m};
+  model->terms.push_back(std::make_shared<SeamTerm>(std::vector<Seam>{std::move(seam)}, seam_stiffness_N_m2(*model),
+                                                    model->node_count()));
+}
+
 // A drape test's support must lie under the specimen: every point of the named body, seen from
 // above, within the placed circle.
 void check_drape_support(const Scene& scene, const Model& model) {
@@ -498,6 +516,7 @@ Model build_model(const Scene& scene, const Model* placed_from) {
   perturb_start(scene.perturbation, model.locks, &model.start);  // after every lock is known
   add_pressure(scene, &model);
   add_edge_contact(scene, &model);
+  add_tube_seam(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);
   for (std::string& w : plausibility_warnings(fabric_values(scene, model, mass, rigidity)))

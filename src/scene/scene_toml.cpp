@@ -112,6 +112,29 @@ void read_rectangle(TableReader& r, Scene* scene) {
   scene->fabric_where = r.locate_key("divisions");
 }
 
+// A seamless tube: the rectangle of its circumference and length sewn to itself, the warp
+// running round it or along it; divisions are [round, along].
+void read_tube(TableReader& r, Scene* scene) {
+  const double circumference = r.number("circumference_m", 0.0, true);
+  check_size(r, "circumference_m", circumference);
+  const double length = r.number("length_m", 0.0, true);
+  check_size(r, "length_m", length);
+  const auto [round, along] = r.integer_pair("divisions", true);
+  const std::string warp_runs = r.text("warp_runs", "round");
+  if (warp_runs != "round" && warp_runs != "along")
+    r.fail("warp_runs", "must be round or along (got '" + shown(warp_runs) + "')");
+  FabricSpec& f = scene->fabric;
+  const bool warp_round = warp_runs == "round";
+  f.tube = warp_round ? FabricSpec::Tube::warp_round : FabricSpec::Tube::warp_along;
+  f.width_m = warp_round ? circumference : length;
+  f.height_m = warp_round ? length : circumference;
+  const int round_divisions = checked_int(r, "divisions", round, 3, 10000);
+  const int along_divisions = checked_int(r, "divisions", along, 1, 10000);
+  f.divisions_warp = warp_round ? round_divisions : along_divisions;
+  f.divisions_weft = warp_round ? along_divisions : round_divisions;
+  scene->fabric_where = r.locate_key("divisions");
+}
+
 // A jittered lattice's nodes move by up to this fraction of its spacing (kMaxJitter keeps its
 // cells convex); its seed is the start's, [initial] seed, read later (parse_scene).
 void read_jitter(TableReader& r, FabricSpec* f) {
@@ -148,7 +171,8 @@ void read_fabric(TableReader& r, Scene* scene) {
   const std::string shape = r.text("shape", "rectangle");
   if (shape == "rectangle") read_rectangle(r, scene);
   else if (shape == "circle") read_circle(r, scene);
-  else r.fail("shape", "must be rectangle or circle (got '" + shown(shape) + "')");
+  else if (shape == "tube") read_tube(r, scene);
+  else r.fail("shape", "must be rectangle, circle or tube (got '" + shown(shape) + "')");
   scene->origin_m = r.vector<3>("origin_m", Eigen::Vector3d::Zero());
   scene->warp_path = resolve(scene->path, plain_text(r, "warp", "", true));
   scene->warp_where = r.locate_key("warp");
@@ -173,6 +197,9 @@ void read_fabric(TableReader& r, Scene* scene) {
   if (shape == "rectangle")
     r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
                      "areal_mass_g_m2", "compression"});
+  else if (shape == "tube")
+    r.reject_unknown({"shape", "circumference_m", "length_m", "divisions", "warp_runs", "origin_m", "warp", "weft",
+                      "softening", "locking_angle_deg", "areal_mass_g_m2", "compression"});
   else if (scene->fabric.mesh == FabricSpec::Mesh::arc)
     r.reject_unknown({"shape", "diameter_m", "mesh", "rings", "spokes", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
                      "areal_mass_g_m2", "compression"});
@@ -529,10 +556,14 @@ void read_perturbation(TableReader& r, StartPerturbation* p) {
 
 void read_initial(TableReader r, Scene* scene) {
   scene->initial_where = r.where();
-  const std::string shape = r.text("shape", "flat");
+  const bool tube = scene->fabric.tube != FabricSpec::Tube::none;
+  const std::string shape = r.text("shape", tube ? "tube" : "flat");
   if (!parse_initial_kind(shape, &scene->initial.kind))
-    r.fail("shape", "must be one of flat, lift, bump, wrap (got '" + shown(shape) + "')");
+    r.fail("shape", "must be one of flat, lift, bump, wrap, tube (got '" + shown(shape) + "')");
   using Kind = InitialShape::Kind;
+  if (tube != (scene->initial.kind == Kind::tube))
+    r.fail("shape", tube ? "a tube fabric starts as a tube round the body (shape = \"tube\"), not " + shape
+                         : std::string("a tube start needs a tube fabric ([fabric] shape = \"tube\")"));
   InitialShape& s = scene->initial;
   const bool raises = s.kind == Kind::lift || s.kind == Kind::bump;
   s.height_m = r.number("height_m", 0.0, raises);
@@ -541,6 +572,11 @@ void read_initial(TableReader r, Scene* scene) {
     s.radius_m = r.number("radius_m", 0.0, true);
     s.facing_deg = angle(r, "facing_deg", 0.0, true);
     s.span_deg = r.number("span_deg", 0.0, true);
+  }
+  if (s.kind == Kind::tube) {
+    s.axis_xy_m = r.vector<2>("axis_m", Eigen::Vector2d::Zero(), true);
+    s.radius_m = r.number("radius_m", 0.0, true);
+    s.facing_deg = angle(r, "facing_deg", 0.0);
   }
   std::string field;
   if (const std::string why = s.invalid_reason(&field); !why.empty()) r.fail(field, why);

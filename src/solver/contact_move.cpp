@@ -26,12 +26,14 @@ Eigen::Vector3d keep_locked(Eigen::Vector3d point, const Eigen::Vector3d& refere
 
 // A node held on some axes cannot be projected to the closest surface point: that would move
 // it along them. It returns to the surface along the free part of the normal instead, or, if
-// the surface fell away further than the step, it is free.
+// the surface fell away further than the step, it is free. The reach is never shorter than
+// Embree's single-precision slip (as in entry_point): a short step near the rest would search a
+// ray that ends within a rounding error of the surface, miss it and release the node.
 NodeMove slide_locked(const Model& model, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
                       const NodeContact& contact, AxisMask locks) {
   const Eigen::Vector3d along = remove_locked(contact.normal, locks).normalized();
-  const double reach = 2.0 * (to - from).norm();
   const RigidBody& body = model.bodies[static_cast<std::size_t>(contact.body)];
+  const double reach = 2.0 * (to - from).norm() + 1e-6 * body.box().diagonal();
   const auto s = body.first_entry(to + reach * along, to - reach * along);
   if (!s) return {to, NodeContact{}};
   return {keep_locked(s->point, to, locks), NodeContact{contact.body, s->normal, contact.anchor}};

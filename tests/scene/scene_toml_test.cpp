@@ -243,6 +243,64 @@ TEST(LoadScene, InitialShapeNeedsItsParameters) {
   EXPECT_EQ(e.where().key, "initial.axis_m");
 }
 
+// A seamless tube: its circumference, length and [round, along] divisions; the warp round it
+// by default; it starts as a tube round the body, and nothing else starts as one.
+const char* kTube =
+    "[fabric]\n"                          // line 1
+    "shape = \"tube\"\n"                  // line 2
+    "circumference_m = 0.3\n"             // line 3
+    "length_m = 0.1\n"                    // line 4
+    "divisions = [30, 10]\n"              // line 5
+    "warp = \"warp.csv\"\n"               // line 6
+    "weft = \"weft.csv\"\n"               // line 7
+    "[initial]\n"                         // line 8
+    "axis_m = [0, 0]\n"                   // line 9
+    "radius_m = 0.06\n";                  // line 10
+
+Scene load_text(const std::string& text) {
+  test::TempDir dir;
+  return load_scene(dir.write("scene.toml", text));
+}
+
+TEST(LoadScene, ReadsATube) {
+  const Scene round = load_text(kTube);
+  EXPECT_EQ(round.fabric.tube, FabricSpec::Tube::warp_round);
+  EXPECT_EQ(round.fabric.width_m, 0.3);
+  EXPECT_EQ(round.fabric.height_m, 0.1);
+  EXPECT_EQ(round.fabric.divisions_warp, 30);
+  EXPECT_EQ(round.fabric.divisions_weft, 10);
+  EXPECT_EQ(round.initial.kind, InitialShape::Kind::tube);
+}
+
+TEST(LoadScene, ATubeWithItsWarpAlongItTurnsItsRectangle) {
+  std::string text = kTube;
+  text.replace(text.find("length_m"), 0, "warp_runs = \"along\"\n");
+  const Scene along = load_text(text);
+  EXPECT_EQ(along.fabric.tube, FabricSpec::Tube::warp_along);
+  EXPECT_EQ(along.fabric.width_m, 0.1);
+  EXPECT_EQ(along.fabric.height_m, 0.3);
+  EXPECT_EQ(along.fabric.divisions_warp, 10);
+  EXPECT_EQ(along.fabric.divisions_weft, 30);
+}
+
+TEST(LoadScene, BadTubesNameTheirKey) {
+  const auto error_with = [](const std::string& from, const std::string& to) {
+    std::string text = kTube;
+    text.replace(text.find(from), from.size(), to);
+    return load_error(text);
+  };
+  EXPECT_EQ(error_with("divisions = [30, 10]", "divisions = [2, 10]").where().key, "fabric.divisions");
+  EXPECT_EQ(error_with("length_m = 0.1", "length_m = -0.1").where().key, "fabric.length_m");
+  EXPECT_EQ(error_with("length_m = 0.1", "length_m = 0.1\nwarp_runs = \"sideways\"").where().key, "fabric.warp_runs");
+  EXPECT_EQ(error_with("length_m = 0.1", "length_m = 0.1\nsize_m = [0.1, 0.1]").where().key, "fabric.size_m");
+  EXPECT_EQ(error_with("radius_m = 0.06", "shape = \"flat\"").where().key, "initial.shape");
+  EXPECT_EQ(error_with("radius_m = 0.06", "").where().key, "initial.radius_m");
+  EXPECT_EQ(error_with("radius_m = 0.06", "radius_m = -0.06").where().key, "initial.radius_m");
+  const InputError not_a_tube = load_error(std::string(kMinimal) + "[initial]\nshape = \"tube\"\nradius_m = 0.1\n");
+  EXPECT_EQ(not_a_tube.where().key, "initial.shape");
+  EXPECT_NE(std::string(not_a_tube.what()).find("tube fabric"), std::string::npos) << not_a_tube.what();
+}
+
 TEST(LoadScene, OverridesReplaceValuesByDottedKey) {
   test::TempDir dir;
   const std::string path = dir.write("scene.toml", kMinimal);

@@ -6,7 +6,9 @@
 // fabric's springs' and hinges' energy, plus its constant weight.
 #include <gtest/gtest.h>
 
+#include "fabform/analysis/contact_pressure.hpp"
 #include "fabform/model/equilibrium.hpp"
+#include "fabform/model/seam.hpp"
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/model/model.hpp"
@@ -101,7 +103,8 @@ INSTANTIATE_TEST_SUITE_P(Shipped, ShippedScene,
                                            // The clamp holds the centre half a millimetre over the
                                            // disc, so the overhang touches only its rim (8 nodes).
                                            SceneCase{"scenes/cusick.toml", "newton", 1e-6, 4},
-                                           SceneCase{"scenes/cusick_woven.toml", "newton", 1e-6, 4}),
+                                           SceneCase{"scenes/cusick_woven.toml", "newton", 1e-6, 4},
+                                           SceneCase{"scenes/tube.toml", "newton", 1e-5, 1000, true}),
                          [](const auto& case_info) {
                            const std::string file = case_info.param.file;  // scenes/NAME.toml
                            return file.substr(7, file.size() - 12);
@@ -167,6 +170,36 @@ TEST(ShippedCadDie, FormsOverTheRibbedPartWithNoSpringThroughIt) {
   const Summary summary = solve(model, state, scene.solver);
   ASSERT_TRUE(summary.converged()) << summary.message;
   EXPECT_LE(find_spring_cuts(model, state.x).deepest_m, 1e-4);
+}
+
+// The seamless tube on a cylinder larger than it (Laplace): along its middle row, away from its
+// rims, the pressure is p = T / r within 2 %, T the knit's table at the tube's hoop strain there
+// (measured from the formed row's circumference), r the cylinder's radius; its seam carries that
+// tension and stands open by less than a micrometre.
+TEST(ShippedTube, PressesTheCylinderAsLaplaceSays) {
+  const Scene written = load_scene(test::source_path("scenes/tube.toml"));
+  const Model model = build_model(written);
+  const Scene scene = with_tolerance_in_newtons(written, model);
+  SolverState state = SolverState::at_start(model);
+  const Summary summary = solve(model, state, scene.solver);
+  ASSERT_TRUE(summary.converged()) << summary.message;
+  const double radius = 0.060;  // molds/cylinder_r60mm_h200mm.obj
+  const Fabric& f = model.fabric;
+  const int middle = f.nodes_weft() / 2;
+  double round = 0.0;
+  for (int i = 0; i + 1 < f.nodes_warp(); ++i)
+    round += (state.x[static_cast<std::size_t>(f.node(i + 1, middle))] - state.x[static_cast<std::size_t>(f.node(i, middle))]).norm();
+  const double strain = round / scene.fabric.width_m - 1.0;
+  EXPECT_NEAR(strain, 2.0 * M_PI * radius / scene.fabric.width_m - 1.0, 1e-3);  // on the cylinder
+  const double laplace_Pa = model.warp.tension(strain) / radius;
+  const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-8);
+  const ContactPressure pressure = contact_pressure(model, state.x, check.contact);
+  for (int i = 0; i < f.nodes_warp(); ++i)
+    EXPECT_NEAR(pressure.node_Pa[static_cast<std::size_t>(f.node(i, middle))], laplace_Pa, 0.02 * laplace_Pa) << "node " << i;
+  const std::vector<SeamFigures> seams = seam_figures(model, state.x);
+  ASSERT_EQ(seams.size(), 1u);
+  EXPECT_NEAR(seams[0].tension_mean_N_m, model.warp.tension(strain), 0.01 * model.warp.tension(strain));
+  EXPECT_LE(seams[0].gap_max_m, 1e-6);
 }
 
 }  // namespace

@@ -30,6 +30,10 @@ constexpr double kMaxJitter = 0.2;
 struct FabricSpec {
   enum class Shape { rectangle, circle };
   enum class Mesh { quadrangular, triangular, arc, jittered };
+  // A rectangle sewn to itself across one direction: a circular knit's seamless tube, the warp
+  // running round it (its left and right edges sewn) or along it (bottom and top sewn). The
+  // lattice stays the rectangle's; the seam is a term of the model (seam.hpp).
+  enum class Tube { none, warp_round, warp_along };
   double width_m = 0.1;   // rectangle W along warp (x); circle: its diameter (= height_m)
   double height_m = 0.1;  // rectangle H along weft (y)
   int divisions_warp = 40;  // rectangle: springs along x; circle lattice: cells across the diameter
@@ -43,6 +47,7 @@ struct FabricSpec {
   bool shear_springs = false;  // both diagonals of every four-sided cell (implied by triangular)
   bool bend_springs = false;   // a spring over every two consecutive springs in line
   bool hinges = false;         // a bending hinge across every side two faces share
+  Tube tube = Tube::none;      // a rectangle only
 
   /// Why the spec cannot make a fabric, or "".
   std::string invalid_reason() const;
@@ -54,6 +59,7 @@ struct FabricSpec {
 
 const char* to_string(FabricSpec::Shape shape);
 const char* to_string(FabricSpec::Mesh mesh);
+const char* to_string(FabricSpec::Tube tube);
 
 struct FabricLayout {
   std::vector<Eigen::Vector3d> rest;           // flat positions, z = 0

@@ -44,6 +44,9 @@ class TensionTable {
   /// The law a spring of rest length L follows below zero strain.
   CompressionLaw compression_law(double rest_length_m) const;
 
+  /// The steepest segment's slope (N/m per unit strain); a slack range has slope 0, and the
+  /// extended end segments keep their slopes.
+  double steepest_slope() const;
   bool tension_only() const { return tension_only_; }
   /// Whether the table is extrapolated at this strain (a slack tension-only spring is not).
   bool beyond_range(double strain) const {
