@@ -22,11 +22,12 @@ std::vector<double> tributary_areas(const Fabric& fabric, const std::vector<Eige
 }
 
 // The body's reaction on a node it touches: the nearest body's normal decides the direction.
-double reaction_N(const Model& model, const std::vector<Eigen::Vector3d>& x, int node, NearbyQueries& queries) {
+double reaction_N(const Model& model, const std::vector<Eigen::Vector3d>& x, const Eigen::Vector3d& force, int node,
+                  NearbyQueries& queries) {
   const auto k = static_cast<std::size_t>(node);
   const NearestSurface nearest = nearest_surface(model, queries, x[k]);
   if (nearest.body < 0) return 0.0;
-  return pressing_force(node_force(model, x, node), model.locks[k], nearest.point.normal);
+  return pressing_force(force, model.locks[k], nearest.point.normal);
 }
 
 // The force with which the springs wrapped over the bodies' edges press on them, half on each
@@ -96,11 +97,12 @@ ContactPressure contact_pressure(const Model& model, const std::vector<Eigen::Ve
   // together over their areas together (how the seam's stitches share the reaction between them
   // is the stitches' business, not the body's).
   const std::vector<int> sewn = sewn_representatives(model);
+  const std::vector<Eigen::Vector3d> forces = node_forces(model, x);
   std::vector<double> lambda(x.size(), 0.0), sewn_lambda(x.size(), 0.0), sewn_area(x.size(), 0.0);
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
     if ((!contact[i] && over_edges[i] == 0.0) || !(area[i] > 0.0)) continue;
-    lambda[i] = (contact[i] ? reaction_N(model, x, k, queries) : 0.0) + over_edges[i];
+    lambda[i] = (contact[i] ? reaction_N(model, x, forces[i], k, queries) : 0.0) + over_edges[i];
     sewn_lambda[static_cast<std::size_t>(sewn[i])] += lambda[i];
     sewn_area[static_cast<std::size_t>(sewn[i])] += area[i];
   }

@@ -87,6 +87,15 @@ double face_area(const Face& face, const std::vector<Eigen::Vector3d>& x) {
   return 0.5 * twice;
 }
 
+std::vector<std::array<int, 3>> face_triangles(const std::vector<Face>& faces) {
+  std::vector<std::array<int, 3>> triangles;
+  for (const Face& f : faces) {
+    triangles.push_back({f.corner[0], f.corner[1], f.corner[2]});
+    if (f.corners == 4) triangles.push_back({f.corner[0], f.corner[2], f.corner[3]});
+  }
+  return triangles;
+}
+
 FabricLayout rectangle_layout(const FabricSpec& spec) {
   const int n = spec.divisions_warp + 1, m = spec.divisions_weft + 1;
   FabricLayout layout;

@@ -74,8 +74,8 @@ double least_clearance(const Model& model, const NearbyQueries& queries, const E
   return least;
 }
 
-NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, int node, NearbyQueries& queries,
-                     double contact_tolerance_m, double tolerance_N) {
+NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, const Eigen::Vector3d& r, int node,
+                     NearbyQueries& queries, double contact_tolerance_m, double tolerance_N) {
   const auto k = static_cast<std::size_t>(node);
   NodeCheck c;
   NearestSurface nearest;
@@ -88,7 +88,6 @@ NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, 
   }
   c.touching = nearest.body >= 0 && nearest.point.distance <= contact_tolerance_m;
   if (nearest.body >= 0) c.penetration_m = -nearest.point.signed_distance;
-  const Eigen::Vector3d r = node_force(model, x, node);
   const double friction = c.touching ? model.bodies[static_cast<std::size_t>(nearest.body)].friction() : 0.0;
   c.residual_N = unbalanced_force(r, model.locks[k], c.touching ? &nearest.point.normal : nullptr, friction).norm();
   if (c.touching) c.grip = grip(r, model.locks[k], nearest.point.normal, friction, tolerance_N);
@@ -130,8 +129,10 @@ EquilibriumReport measure_equilibrium(const Model& model, const std::vector<Eige
     }
   }
   std::vector<NodeCheck> checks(n);
+  const std::vector<Eigen::Vector3d> forces = node_forces(model, x);
   for_each_nearby(model.node_count(), model.bodies, [&](int k, NearbyQueries& queries) {
-    checks[static_cast<std::size_t>(k)] = check_node(model, x, k, queries, contact_tolerance_m, tolerance_N);
+    checks[static_cast<std::size_t>(k)] =
+        check_node(model, x, forces[static_cast<std::size_t>(k)], k, queries, contact_tolerance_m, tolerance_N);
   });
   report.max_penetration_m = deepest_penetration(model, x, checks);
   for (std::size_t k = 0; k < n; ++k) {

@@ -73,6 +73,12 @@ int Model::load_steps() const {
   return steps;
 }
 
+std::vector<Eigen::Vector3d> node_forces(const Model& model, const Positions& x) {
+  std::vector<Eigen::Vector3d> forces(x.size(), Eigen::Vector3d::Zero());
+  for (const auto& term : model.terms) term->add_forces(model, x, forces);
+  return forces;
+}
+
 Eigen::Vector3d node_force_at(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   for (const auto& term : model.terms) force += term->force_at(model, x, node, at);

@@ -14,6 +14,7 @@
 #include "fabform/material/material_csv.hpp"
 #include "fabform/model/clamp_frame.hpp"
 #include "fabform/model/seam.hpp"
+#include "fabform/model/self_contact.hpp"
 #include "fabform/model/edge_contact.hpp"
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/gravity.hpp"
@@ -458,6 +459,14 @@ void add_tube_seam(const Scene& scene, Model* model) {
                                                     model->node_count()));
 }
 
+// Fabric–fabric contact, after the seams: nodes sewn together are one point to it.
+void add_self_contact(const Scene& scene, Model* model) {
+  if (!scene.self_contact.on) return;
+  model->terms.push_back(std::make_shared<SelfContact>(model->fabric, sewn_representatives(*model),
+                                                       scene.self_contact.thickness_m,
+                                                       self_contact_stiffness_N_m(*model)));
+}
+
 // A drape test's support must lie under the specimen: every point of the named body, seen from
 // above, within the placed circle.
 void check_drape_support(const Scene& scene, const Model& model) {
@@ -517,6 +526,7 @@ Model build_model(const Scene& scene, const Model* placed_from) {
   add_pressure(scene, &model);
   add_edge_contact(scene, &model);
   add_tube_seam(scene, &model);
+  add_self_contact(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);
   for (std::string& w : plausibility_warnings(fabric_values(scene, model, mass, rigidity)))

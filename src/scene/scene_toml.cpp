@@ -343,6 +343,16 @@ void read_wind(TableReader r, Scene* scene) {
   r.reject_unknown({"velocity_m_s", "coefficient_N_s_m3"});
 }
 
+void read_self_contact(TableReader r, Scene* scene) {
+  SelfContactSpec& s = scene->self_contact;
+  s.on = true;
+  s.where = r.where();
+  s.thickness_m = r.number("thickness_m", s.thickness_m);
+  // A centimetre is a quilt; beyond, a unit mistake.
+  if (!(s.thickness_m > 0.0 && s.thickness_m <= 0.01)) r.fail("thickness_m", "must be in (0, 0.01] m");
+  r.reject_unknown({"thickness_m"});
+}
+
 void read_pressure(TableReader r, Scene* scene) {
   PressureSpec& p = scene->pressure;
   p.on = true;
@@ -829,6 +839,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
   if (r.has("pressure")) read_pressure(r.table("pressure", false), &scene);
   if (r.has("clamp")) read_clamp(r.table("clamp", false), &scene);
   if (r.has("drape")) read_drape(r.table("drape", false), &scene);
+  if (r.has("self_contact")) read_self_contact(r.table("self_contact", false), &scene);
   if (scene.fabric.mesh == FabricSpec::Mesh::triangular && !scene.shear.on)
     fabric.fail("mesh", "a triangular mesh has diagonal springs: name their bias table in a [shear] table "
                         "(material = FILE)");
@@ -846,6 +857,12 @@ Scene read_scene(const toml::table& root, const std::string& path,
   refuse_edge_contact_but_in_newton(scene, solver);
   refuse_hysteresis_in_dynamic(scene, solver);
   refuse_hysteresis_in_load_steps(scene);
+  if (scene.self_contact.on && scene.solver.name != "newton")
+    solver.fail("name", "the scene has self-contact ([self_contact], line " + std::to_string(scene.self_contact.where.line) +
+                            "), whose stiff penalty only newton takes in its step, not " + scene.solver.name);
+  if (scene.fabric.tube != FabricSpec::Tube::none && scene.solver.name != "newton")
+    solver.fail("name", "the fabric is a tube (" + said_at(scene.fabric_where) +
+                            "), whose seam's stiff stitches only newton takes in its step, not " + scene.solver.name);
   if (scene.clamp.on && scene.solver.name != "newton")
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only newton models, not " + scene.solver.name);
@@ -854,7 +871,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
     solver.fail(continuation_key, why);
   read_output(r.table("output", false), &scene);
   r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "pressure", "clamp", "drape",
-                    "initial", "solver", "output"});
+                    "self_contact", "initial", "solver", "output"});
   return scene;
 }
 

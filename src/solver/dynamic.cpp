@@ -88,12 +88,7 @@ class Dynamics {
   const TimeStep& time_step() const { return step_; }
   double damping() const { return damping_; }
 
-  std::vector<Eigen::Vector3d> forces() const {
-    std::vector<Eigen::Vector3d> r(state_.x.size());
-#pragma omp parallel for schedule(static) if (model_.node_count() >= kMinParallelItems)
-    for (int k = 0; k < model_.node_count(); ++k) r[static_cast<std::size_t>(k)] = node_force(model_, state_.x, k);
-    return r;
-  }
+  std::vector<Eigen::Vector3d> forces() const { return node_forces(model_, state_.x); }
 
   /// One time step driven by the resultants R at the current positions.
   void advance(const std::vector<Eigen::Vector3d>& forces) {

@@ -77,13 +77,6 @@ struct StepAccuracy {
   static StepAccuracy loose_estimate() { return {kEstimateForcing, true, true}; }
 };
 
-std::vector<Eigen::Vector3d> node_forces(const Model& model, const std::vector<Eigen::Vector3d>& x) {
-  std::vector<Eigen::Vector3d> forces(x.size());
-#pragma omp parallel for schedule(static) if (model.node_count() >= kMinParallelItems)
-  for (int k = 0; k < model.node_count(); ++k) forces[static_cast<std::size_t>(k)] = node_force(model, x, k);
-  return forces;
-}
-
 // Seed 003 §3.2.2: a node on a body whose force (on its free axes) points out of it leaves it.
 void release_pulling_nodes(const Model& model, const std::vector<Eigen::Vector3d>& forces,
                            SolverState& state) {

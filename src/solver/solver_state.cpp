@@ -49,13 +49,7 @@ StateResidual worst_of(const SolverState& state, const std::vector<double>& resi
 }  // namespace
 
 StateResidual measure_state(const Model& model, const SolverState& state) {
-  std::vector<double> residual(state.x.size());
-#pragma omp parallel for schedule(static) if (model.node_count() >= kMinParallelItems)
-  for (int k = 0; k < model.node_count(); ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    residual[i] = node_residual(model, state, k, state.x[i], state.contact[i]);
-  }
-  return worst_of(state, residual);
+  return measure_state(model, state, node_forces(model, state.x));
 }
 
 StateResidual measure_state(const Model& model, const SolverState& state,

@@ -82,4 +82,7 @@ FabricLayout jittered_layout(const FabricSpec& spec);
 /// The area of a face at positions x (m²): a quadrilateral as two triangles split at corner 0.
 double face_area(const Face& face, const std::vector<Eigen::Vector3d>& x);
 
+/// The faces as triangles, split as face_area splits them, in the faces' order.
+std::vector<std::array<int, 3>> face_triangles(const std::vector<Face>& faces);
+
 }  // namespace fabform

@@ -71,4 +71,8 @@ inline Eigen::Vector3d node_force(const Model& model, const Positions& x, int no
   return node_force_at(model, x, node, x[static_cast<std::size_t>(node)]);
 }
 
+/// R at every node at x: node_force at each, summed over the terms in the same order, each term
+/// in one pass (Term::add_forces).
+std::vector<Eigen::Vector3d> node_forces(const Model& model, const Positions& x);
+
 }  // namespace fabform

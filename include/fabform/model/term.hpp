@@ -75,6 +75,10 @@ class Term {
   virtual Eigen::Vector3d force_at(const Model& model, const Positions& x, int node,
                                    const Eigen::Vector3d& at) const = 0;
 
+  /// Adds its force on every node at x (force_at at each node's own place) to `forces`. A term
+  /// whose forces come from pairs found over the whole fabric finds them once here.
+  virtual void add_forces(const Model& model, const Positions& x, std::vector<Eigen::Vector3d>& forces) const;
+
   /// Its potential Π_t(x) (J), whose −gradient is force_at; 0 for a term without one.
   virtual double energy(const Model& model, const Positions& x) const = 0;
 

@@ -141,6 +141,14 @@ struct DrapeSpec {
   SourceLocation where;
 };
 
+// [self_contact]: the fabric meets itself (folds, plies, a garment's front and back) with a
+// thickness; material files give none, so the scene does, or 0.5 mm (self_contact.hpp).
+struct SelfContactSpec {
+  bool on = false;
+  double thickness_m = 0.5e-3;
+  SourceLocation where;
+};
+
 struct Scene {
   std::string path;
   std::string name;
@@ -169,6 +177,7 @@ struct Scene {
   PressureSpec pressure;
   ClampSpec clamp;
   DrapeSpec drape;
+  SelfContactSpec self_contact;
   InitialShape initial;
   SourceLocation initial_where;
   StartPerturbation perturbation;  // [initial] perturbation_m, seed: a seeded jitter of the start in z
