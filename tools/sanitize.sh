@@ -34,6 +34,7 @@ SLOW=(
   # have their own small tests)
   '*ConvergesOnTheBodyWithoutEnteringIt/mold*' '*ConvergesOnTheBodyWithoutEnteringIt/dome*'
   '*ConvergesOnTheBodyWithoutEnteringIt/pin' '*ConvergesOnTheBodyWithoutEnteringIt/cusick*'
+  '*ConvergesOnTheBodyWithoutEnteringIt/fold' # ShippedFold runs the same scene
   '*ShippedCadPunch*' '*ShippedCadDie*' '*ShippedCup.*' '*ReproducibleForming.*'
   # mesh repair over the whole corpus (the other MeshRepairProperties repair every mesh of it)
   '*KeepsTheSurfaceAndTheBoundingBox*' '*TheWrittenFileIsWhatTheReportPromised*'

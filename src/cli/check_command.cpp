@@ -2,9 +2,12 @@
 // it, and (with --repair) a cleaned copy. Exit 0 when the mesh (or the repaired copy) is usable,
 // 2 with one line on stderr when it cannot be read or used.
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/guarded.hpp"
@@ -25,10 +28,6 @@ struct CheckArguments {
   std::optional<std::string> repair_out;
 };
 
-InputError usage_error(const std::string& flag, const std::string& why) {
-  return InputError({"command line", 0, flag}, why);
-}
-
 bool ends_with_obj(const std::string& path) {
   if (path.size() < 4) return false;
   std::string tail = path.substr(path.size() - 4);
@@ -36,20 +35,12 @@ bool ends_with_obj(const std::string& path) {
   return tail == ".obj";
 }
 
-CheckArguments parse_arguments(const std::vector<std::string>& args) {
+CheckArguments read_arguments(const CLI::App& command) {
+  refuse_leftovers(command, "only one mesh can be checked at a time");
   CheckArguments parsed;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw usage_error(a, "needs a value");
-      return args[++i];
-    };
-    if (a == "--units") parsed.units = value();
-    else if (a == "--repair") parsed.repair_out = value();
-    else if (!a.empty() && a[0] == '-') throw usage_error(a, "unknown option");
-    else if (parsed.mesh.empty()) parsed.mesh = a;
-    else throw usage_error(a, "only one mesh can be checked at a time");
-  }
+  if (!values_of(command, "MESH").empty()) parsed.mesh = values_of(command, "MESH").front();
+  if (!values_of(command, "--units").empty()) parsed.units = values_of(command, "--units").front();
+  if (!values_of(command, "--repair").empty()) parsed.repair_out = values_of(command, "--repair").front();
   if (parsed.mesh.empty()) throw usage_error("MESH", "missing: fabform check MESH [--units U] [--repair OUT.obj]");
   double unused = 0.0;
   if (parsed.units && !parse_length_unit(*parsed.units, &unused))
@@ -174,8 +165,14 @@ int check(const CheckArguments& args) {
 
 }  // namespace
 
-int check_command(const std::vector<std::string>& args) {
-  return guarded([&] { return check(parse_arguments(args)); });
+Command add_check_command(CLI::App& app) {
+  CLI::App* command = app.add_subcommand("check", "report whether a mesh can be a body: its size, defects and what contact needs");
+  command->add_option("MESH", "STL, OBJ, PLY, OFF or VRML97 file");
+  command->add_option("--units", "the file's unit: m, cm, mm or in")->type_name("U");
+  command->add_option("--repair", "write the mesh repaired (merged, oriented, cracks closed) as OBJ")->type_name("OUT.obj");
+  command->allow_extras();
+  auto args = std::make_shared<CheckArguments>();
+  return {command, [command, args] { *args = read_arguments(*command); }, [args] { return check(*args); }};
 }
 
 }  // namespace fabform::cli

@@ -6,8 +6,11 @@
 // with its reason. OUT is then untouched.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/guarded.hpp"
@@ -20,9 +23,21 @@
 namespace fabform::cli {
 namespace {
 
-int predistort_files(const std::vector<std::string>& args) {
-  if (args.size() != 3 || args[0].rfind('-', 0) == 0)
-    throw InputError({"command line", 0, ""}, "usage: fabform predistort RESULT_DIR IMAGE OUT.png");
+struct PredistortArguments {
+  std::vector<std::string> files;  // RESULT_DIR, IMAGE, OUT
+};
+
+PredistortArguments read_arguments(const CLI::App& command) {
+  refuse_leftovers(command, "usage: fabform predistort RESULT_DIR IMAGE OUT.png");
+  PredistortArguments parsed;
+  for (const char* name : {"RESULT_DIR", "IMAGE", "OUT"})
+    for (const std::string& v : values_of(command, name)) parsed.files.push_back(v);
+  if (parsed.files.size() != 3) throw usage_error("", "usage: fabform predistort RESULT_DIR IMAGE OUT.png");
+  return parsed;
+}
+
+int predistort_files(const PredistortArguments& parsed) {
+  const std::vector<std::string>& args = parsed.files;
   const std::filesystem::path folder = std::filesystem::path(args[2]).parent_path();
   if (!folder.empty() && !std::filesystem::is_directory(folder))
     throw InputError({args[2], 0, ""}, "no such folder to write into");
@@ -35,8 +50,14 @@ int predistort_files(const std::vector<std::string>& args) {
 
 }  // namespace
 
-int predistort_command(const std::vector<std::string>& args) {
-  return guarded([&] { return predistort_files(args); });
+Command add_predistort_command(CLI::App& app) {
+  CLI::App* command = app.add_subcommand("predistort", "the image to print on the flat blank so that the formed part shows a design");
+  command->add_option("RESULT_DIR", "a run's results folder (its blank.obj)");
+  command->add_option("IMAGE", "the design, a PNG in the part's developed view");
+  command->add_option("OUT", "the print, a PNG in the blank's frame")->type_name("OUT.png");
+  command->allow_extras();
+  auto args = std::make_shared<PredistortArguments>();
+  return {command, [command, args] { *args = read_arguments(*command); }, [args] { return predistort_files(*args); }};
 }
 
 }  // namespace fabform::cli

@@ -2,8 +2,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <optional>
 #include <utility>
+
+#include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/guarded.hpp"
@@ -51,31 +55,29 @@ const std::pair<const char*, const char*> kShorthands[] = {{"--solver", "solver.
                                                            {"--max-iter", "solver.max_iterations"},
                                                            {"--threads", "solver.threads"}};
 
-InputError usage_error(const std::string& flag, const std::string& why) {
-  return InputError({"command line", 0, flag}, why);
+// The overrides in the order the command line gives them (a later one replaces an earlier).
+std::vector<SceneOverride> overrides_in_order(const CLI::App& command) {
+  std::vector<SceneOverride> overrides;
+  std::map<const CLI::Option*, std::size_t> taken;
+  for (const CLI::Option* option : command.parse_order()) {
+    const std::string& value = option->results()[taken[option]++];
+    const std::string name = option->get_name();
+    if (name == "--set") overrides.push_back(parse_override(value));
+    else if (name == "--unset") overrides.push_back(parse_unset(value));
+    for (const auto& [flag, key] : kShorthands)
+      if (name == flag) overrides.push_back({key, value});
+  }
+  return overrides;
 }
 
-RunArguments parse_arguments(const std::vector<std::string>& args) {
+RunArguments read_arguments(const CLI::App& command) {
+  refuse_leftovers(command, "only one scene can be run at a time");
   RunArguments parsed;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw usage_error(a, "needs a value");
-      return args[++i];
-    };
-    bool shorthand = false;
-    for (const auto& [flag, key] : kShorthands)
-      if (a == flag) parsed.overrides.push_back({key, value()}), shorthand = true;
-    if (shorthand) continue;
-    if (a == "--out") parsed.out = value();
-    else if (a == "--resume") parsed.resume = value();
-    else if (a == "--set") parsed.overrides.push_back(parse_override(value()));
-    else if (a == "--unset") parsed.overrides.push_back(parse_unset(value()));
-    else if (a == "--quiet") parsed.quiet = true;
-    else if (!a.empty() && a[0] == '-') throw usage_error(a, "unknown option");
-    else if (parsed.scene.empty()) parsed.scene = a;
-    else throw usage_error(a, "only one scene can be run at a time");
-  }
+  if (!values_of(command, "SCENE").empty()) parsed.scene = values_of(command, "SCENE").front();
+  if (!values_of(command, "--out").empty()) parsed.out = values_of(command, "--out").back();
+  if (!values_of(command, "--resume").empty()) parsed.resume = values_of(command, "--resume").back();
+  parsed.quiet = command.count("--quiet") > 0;
+  parsed.overrides = overrides_in_order(command);
   if (parsed.resume && (!parsed.scene.empty() || parsed.out || !parsed.overrides.empty()))
     throw usage_error("--resume", "takes the scene, overrides and folder of the run it resumes; "
                                   "only --quiet may be added");
@@ -261,8 +263,28 @@ int run(const RunArguments& args) {
 
 }  // namespace
 
-int run_command(const std::vector<std::string>& args) {
-  return guarded([&] { return run(parse_arguments(args)); });
+Command add_run_command(CLI::App& app) {
+  CLI::App* command = app.add_subcommand("run", "solve a scene and write its results to a folder");
+  command->add_option("SCENE", "the scene file (TOML; docs in scenes/README.md)");
+  command->add_option("--out", "the results folder (default: the scene's [output] dir, else results/NAME)")
+      ->type_name("DIR");
+  command->add_option("--resume", "go on from the checkpoint of an interrupted run's folder")->type_name("DIR");
+  command->add_option("--solver", "solver.name: relax, dynamic or newton")->type_name("NAME");
+  command->add_option("--tol", "solver.tolerance_N: stop once every node's unbalanced force is below it")->type_name("N");
+  command->add_option("--tol-m", "solver.tolerance_m: or once the estimated distance to the rest is below it")
+      ->type_name("METRES");
+  command->add_option("--max-iter", "solver.max_iterations")->type_name("K");
+  command->add_option("--threads", "solver.threads")->type_name("T");
+  command->add_option("--set", "replace a scene value by its dotted key, e.g. fabric.divisions=[80,80]")
+      ->type_name("KEY=VALUE");
+  command->add_option("--unset", "remove a scene key")->type_name("KEY");
+  // The shorthands and the overrides may be given again: the later one wins.
+  for (CLI::Option* option : command->get_options())
+    if (option->get_name() != "--help") option->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  command->allow_extras();
+  command->add_flag("--quiet", "no progress lines");
+  auto args = std::make_shared<RunArguments>();
+  return {command, [command, args] { *args = read_arguments(*command); }, [args] { return run(*args); }};
 }
 
 }  // namespace fabform::cli

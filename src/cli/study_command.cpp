@@ -1,8 +1,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <thread>
+
+#include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/guarded.hpp"
@@ -36,10 +39,6 @@ struct StudyArguments {
   bool quiet = false;
 };
 
-InputError usage_error(const std::string& flag, const std::string& why) {
-  return InputError({"command line", 0, flag}, why);
-}
-
 int count_value(const std::string& flag, const std::string& text, int high) {
   std::size_t used = 0;
   int value = 0;
@@ -53,27 +52,23 @@ int count_value(const std::string& flag, const std::string& text, int high) {
   return value;
 }
 
-StudyArguments parse_arguments(const std::vector<std::string>& args) {
+StudyArguments read_arguments(const CLI::App& command) {
+  refuse_leftovers(command, "only one study can be run at a time");
   StudyArguments parsed;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw usage_error(a, "needs a value");
-      return args[++i];
-    };
-    if (a == "--out") parsed.out = value();
-    else if (a == "--resume") parsed.resume = value();
-    else if (a == "--on") parsed.on = value();
-    else if (a == "--jobs") parsed.jobs = count_value(a, value(), 10000);
-    else if (a == "--threads-per-case") parsed.threads_per_case = count_value(a, value(), 1024);
-    else if (a == "--partition") parsed.partition = value();
-    else if (a == "--time-limit") parsed.time_limit_min = count_value(a, value(), 10000000);
-    else if (a == "--mem-mb") parsed.mem_mb = count_value(a, value(), 100000000);
-    else if (a == "--quiet") parsed.quiet = true;
-    else if (!a.empty() && a[0] == '-') throw usage_error(a, "unknown option");
-    else if (parsed.study.empty()) parsed.study = a;
-    else throw usage_error(a, "only one study can be run at a time");
-  }
+  const auto given = [&](const char* option) -> const std::string* {
+    const std::vector<std::string>& values = values_of(command, option);
+    return values.empty() ? nullptr : &values.front();
+  };
+  if (const std::string* v = given("STUDY")) parsed.study = *v;
+  if (const std::string* v = given("--out")) parsed.out = *v;
+  if (const std::string* v = given("--resume")) parsed.resume = *v;
+  if (const std::string* v = given("--on")) parsed.on = *v;
+  if (const std::string* v = given("--jobs")) parsed.jobs = count_value("--jobs", *v, 10000);
+  if (const std::string* v = given("--threads-per-case")) parsed.threads_per_case = count_value("--threads-per-case", *v, 1024);
+  if (const std::string* v = given("--partition")) parsed.partition = *v;
+  if (const std::string* v = given("--time-limit")) parsed.time_limit_min = count_value("--time-limit", *v, 10000000);
+  if (const std::string* v = given("--mem-mb")) parsed.mem_mb = count_value("--mem-mb", *v, 100000000);
+  parsed.quiet = command.count("--quiet") > 0;
   if (parsed.on != "local" && parsed.on != "slurm") throw usage_error("--on", "must be local or slurm");
   if (parsed.on == "local" && (!parsed.partition.empty() || parsed.time_limit_min || parsed.mem_mb))
     throw usage_error(!parsed.partition.empty() ? "--partition" : parsed.time_limit_min ? "--time-limit" : "--mem-mb",
@@ -155,8 +150,21 @@ int study(const StudyArguments& args) {
 
 }  // namespace
 
-int study_command(const std::vector<std::string>& args) {
-  return guarded([&] { return study(parse_arguments(args)); });
+Command add_study_command(CLI::App& app) {
+  CLI::App* command = app.add_subcommand("study", "run every case of a study, here or on Slurm, and tabulate them");
+  command->add_option("STUDY", "the study file (TOML; docs/studies.md)");
+  command->add_option("--out", "the study's folder, new or empty")->type_name("DIR");
+  command->add_option("--resume", "go on with a study's folder: its cases without a result")->type_name("DIR");
+  command->add_option("--on", "where the cases run: local (default) or slurm")->type_name("local|slurm");
+  command->add_option("--jobs", "cases at once (default: local, one per core; Slurm, no throttle)")->type_name("J");
+  command->add_option("--threads-per-case", "threads each case solves with")->type_name("T");
+  command->add_option("--partition", "Slurm's partition")->type_name("P");
+  command->add_option("--time-limit", "Slurm's time limit per case, minutes")->type_name("MIN");
+  command->add_option("--mem-mb", "Slurm's memory per case, MB")->type_name("M");
+  command->add_flag("--quiet", "no progress lines");
+  command->allow_extras();
+  auto args = std::make_shared<StudyArguments>();
+  return {command, [command, args] { *args = read_arguments(*command); }, [args] { return study(*args); }};
 }
 
 }  // namespace fabform::cli

@@ -27,6 +27,13 @@ Eigen::Vector3d round_tube(const Fabric& grid, int node, const Eigen::Vector3d& 
           origin.z() + (warp_round ? flat.y() : flat.x())};
 }
 
+// The part beyond the fold line mirrored back over the part before it, height_m up.
+Eigen::Vector3d folded(const Fabric& grid, int node, const Eigen::Vector3d& origin, const InitialShape& shape) {
+  Eigen::Vector3d flat = grid.rest_position(node);
+  if (flat.x() > shape.fold_at_m) flat.x() = 2.0 * shape.fold_at_m - flat.x(), flat.z() = shape.height_m;
+  return origin + flat;
+}
+
 double lift_of(const Fabric& grid, int node, const InitialShape& shape) {
   const Eigen::Vector3d flat = grid.rest_position(node);
   switch (shape.kind) {
@@ -46,9 +53,10 @@ std::string InitialShape::invalid_reason(std::string* field) const {
     return std::string(why);
   };
   if (!std::isfinite(height_m)) return bad("height_m", "must be finite");
-  if ((kind == Kind::lift || kind == Kind::bump) && height_m == 0.0)
+  if ((kind == Kind::lift || kind == Kind::bump || kind == Kind::fold) && height_m == 0.0)
     return bad("height_m", "must not be zero");
   if (!axis_xy_m.allFinite()) return bad("axis_m", "must be finite");
+  if (kind == Kind::fold && !(std::isfinite(fold_at_m) && fold_at_m > 0.0)) return bad("fold_at_m", "must be positive");
   if (!std::isfinite(facing_deg)) return bad("facing_deg", "must be finite");
   if ((kind == Kind::wrap || kind == Kind::tube) && !(std::isfinite(radius_m) && radius_m > 0.0))
     return bad("radius_m", "must be positive");
@@ -64,6 +72,7 @@ bool parse_initial_kind(const std::string& name, InitialShape::Kind* kind) {
   else if (name == "bump") *kind = Kind::bump;
   else if (name == "wrap") *kind = Kind::wrap;
   else if (name == "tube") *kind = Kind::tube;
+  else if (name == "fold") *kind = Kind::fold;
   else return false;
   return true;
 }
@@ -78,6 +87,8 @@ std::vector<Eigen::Vector3d> initial_positions(const Fabric& grid,
       x = wrapped(grid, k, origin, shape);
     } else if (shape.kind == InitialShape::Kind::tube) {
       x = round_tube(grid, k, origin, shape);
+    } else if (shape.kind == InitialShape::Kind::fold) {
+      x = folded(grid, k, origin, shape);
     } else {
       x = origin + grid.rest_position(k);
       x.z() += lift_of(grid, k, shape);

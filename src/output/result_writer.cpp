@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fabform/analysis/drape_figures.hpp"
+#include "fabform/analysis/ply_figures.hpp"
 #include "fabform/analysis/print_map.hpp"
 #include "fabform/error.hpp"
 #include "fabform/model/force_scale.hpp"
@@ -194,6 +195,11 @@ std::string result_json(const RunRecord& run, const StateFigures& state, const C
     seams.push_back({{"name", f.name}, {"length_m", number(f.length_m)}, {"tension_mean_N_m", number(f.tension_mean_N_m)},
                      {"tension_max_N_m", number(f.tension_max_N_m)}, {"gap_max_m", number(f.gap_max_m)}});
   if (!seams.empty()) j["seams"] = seams;
+  if (const std::optional<PlyFigures> plies = ply_figures(run.model, run.state.x))
+    j["self_contact"] = {{"thickness_m", plies->thickness_m},
+                         {"contact_pairs", plies->contact_pairs},
+                         {"smallest_gap_m", plies->smallest_gap_m ? number(*plies->smallest_gap_m) : nlohmann::json(nullptr)},
+                         {"intersecting_triangle_pairs", plies->intersecting_triangle_pairs}};
   if (run.scene.drape.on) {
     j["drape"] = drape_json(run);
     j["drape_coefficient"] = j["drape"].is_null() ? nlohmann::json(nullptr) : j["drape"]["coefficient"];

@@ -569,19 +569,24 @@ void read_initial(TableReader r, Scene* scene) {
   const bool tube = scene->fabric.tube != FabricSpec::Tube::none;
   const std::string shape = r.text("shape", tube ? "tube" : "flat");
   if (!parse_initial_kind(shape, &scene->initial.kind))
-    r.fail("shape", "must be one of flat, lift, bump, wrap, tube (got '" + shown(shape) + "')");
+    r.fail("shape", "must be one of flat, lift, bump, wrap, tube, fold (got '" + shown(shape) + "')");
   using Kind = InitialShape::Kind;
   if (tube != (scene->initial.kind == Kind::tube))
     r.fail("shape", tube ? "a tube fabric starts as a tube round the body (shape = \"tube\"), not " + shape
                          : std::string("a tube start needs a tube fabric ([fabric] shape = \"tube\")"));
   InitialShape& s = scene->initial;
-  const bool raises = s.kind == Kind::lift || s.kind == Kind::bump;
+  const bool raises = s.kind == Kind::lift || s.kind == Kind::bump || s.kind == Kind::fold;
   s.height_m = r.number("height_m", 0.0, raises);
   if (s.kind == Kind::wrap) {
     s.axis_xy_m = r.vector<2>("axis_m", Eigen::Vector2d::Zero(), true);
     s.radius_m = r.number("radius_m", 0.0, true);
     s.facing_deg = angle(r, "facing_deg", 0.0, true);
     s.span_deg = r.number("span_deg", 0.0, true);
+  }
+  if (s.kind == Kind::fold) {
+    s.fold_at_m = r.number("fold_at_m", 0.0, true);
+    if (scene->fabric.shape != FabricSpec::Shape::rectangle || s.fold_at_m >= scene->fabric.width_m)
+      r.fail("fold_at_m", "must lie inside a rectangle's width (" + number_text(scene->fabric.width_m) + " m)");
   }
   if (s.kind == Kind::tube) {
     s.axis_xy_m = r.vector<2>("axis_m", Eigen::Vector2d::Zero(), true);
@@ -591,7 +596,12 @@ void read_initial(TableReader r, Scene* scene) {
   std::string field;
   if (const std::string why = s.invalid_reason(&field); !why.empty()) r.fail(field, why);
   read_perturbation(r, &scene->perturbation);
-  r.reject_unknown({"shape", "height_m", "axis_m", "radius_m", "facing_deg", "span_deg", "perturbation_m", "seed"});
+  std::vector<std::string> known = {"shape", "perturbation_m", "seed"};
+  if (raises) known.push_back("height_m");
+  if (s.kind == Kind::wrap || s.kind == Kind::tube) known.insert(known.end(), {"axis_m", "radius_m", "facing_deg"});
+  if (s.kind == Kind::wrap) known.push_back("span_deg");
+  if (s.kind == Kind::fold) known.push_back("fold_at_m");
+  r.reject_unknown(known);
 }
 
 // e in newtons or relative to the fabric's force scale: a scene gives one; a command line that

@@ -43,7 +43,7 @@ TEST_F(CheckCommand, ReportsTheShippedMoldInMetres) {
 TEST_F(CheckCommand, InvertedBodyIsRefusedInOneLine) {
   const Outcome o = run_fabform(dir, "check inverted.obj --units mm");
   EXPECT_EQ(o.status, 2);
-  EXPECT_EQ(line_count(o.err), 1) << o.err;
+  EXPECT_EQ(test::error_line_count(o.err), 1) << o.err;
   EXPECT_NE(o.err.find("inverted.obj: the faces point inward"), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("--repair"), std::string::npos) << o.err;
   EXPECT_NE(o.out.find("enclosed volume     -1e-06 m^3"), std::string::npos) << o.out;
@@ -99,7 +99,7 @@ class CheckCommandBadInput : public CheckCommand, public ::testing::WithParamInt
 TEST_P(CheckCommandBadInput, ExitsTwoWithOneLineAndWritesNothing) {
   const Outcome o = run_fabform(dir, GetParam().arguments);
   EXPECT_EQ(o.status, 2) << o.err;
-  EXPECT_EQ(line_count(o.err), 1) << o.err;
+  EXPECT_EQ(test::error_line_count(o.err), 1) << o.err;
   EXPECT_NE(o.err.find(GetParam().expected_in_message), std::string::npos) << o.err;
   EXPECT_FALSE(exists("out.obj"));
 }

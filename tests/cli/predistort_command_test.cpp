@@ -70,7 +70,7 @@ TEST_F(PredistortCommand, BadInputIsOneLineNamingTheFileAndWritesNothing) {
   for (const auto& [arguments, named] : cases) {
     const test::Outcome o = run_fabform(*dir_, arguments);
     EXPECT_EQ(o.status, 2) << arguments;
-    EXPECT_EQ(test::line_count(o.err), 1) << o.err;
+    EXPECT_EQ(test::error_line_count(o.err), 1) << o.err;
     EXPECT_NE(o.err.find(named), std::string::npos) << arguments << ": " << o.err;
   }
   for (const char* file : {"bad1.png", "bad2.png", "bad3.png", "no"})

@@ -41,7 +41,7 @@ class RunCommand : public ::testing::Test {
   // Bad input: exit status 2, one line saying what is wrong, no output folder.
   void expect_refused(const Outcome& o, const std::string& expected_in_message) const {
     EXPECT_EQ(o.status, 2) << o.err;
-    EXPECT_EQ(line_count(o.err), 1) << o.err;
+    EXPECT_EQ(test::error_line_count(o.err), 1) << o.err;
     EXPECT_NE(o.err.find(expected_in_message), std::string::npos) << o.err;
     EXPECT_FALSE(exists("out")) << "an output folder was created for bad input";
   }

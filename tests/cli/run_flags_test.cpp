@@ -87,7 +87,7 @@ std::ostream& operator<<(std::ostream& out, const BadFlag& b) { return out << b.
 
 void expect_one_line_error(const Outcome& o, const std::string& names) {
   EXPECT_EQ(o.status, 2) << o.err;
-  EXPECT_EQ(test::line_count(o.err), 1) << o.err;
+  EXPECT_EQ(test::error_line_count(o.err), 1) << o.err;
   EXPECT_EQ(o.err.rfind("fabform: error: ", 0), 0u) << o.err;
   EXPECT_NE(o.err.find(names), std::string::npos) << o.err << "does not name " << names;
 }

@@ -166,7 +166,7 @@ class ResumeRefusal : public ::testing::Test {
     const std::string before = slurp(dir.path("out/result.json"));
     const test::Outcome o = test::run_fabform(dir, arguments);
     EXPECT_EQ(o.status, 2) << o.err;
-    EXPECT_EQ(test::line_count(o.err), 1) << o.err;
+    EXPECT_EQ(test::error_line_count(o.err), 1) << o.err;
     EXPECT_EQ(slurp(dir.path("out/result.json")), before);
     return o.err;
   }

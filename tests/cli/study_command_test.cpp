@@ -129,7 +129,7 @@ TEST(StudyCommand, BadInputIsOneLineAndWritesNothing) {
   for (const auto& [arguments, expected] : cases) {
     const test::Outcome done = test::run_fabform(dir, arguments);
     EXPECT_EQ(done.status, 2) << arguments;
-    EXPECT_EQ(test::line_count(done.err), 1) << done.err;
+    EXPECT_EQ(test::error_line_count(done.err), 1) << done.err;
     EXPECT_NE(done.err.find(expected), std::string::npos) << arguments << ": " << done.err;
     EXPECT_FALSE(fs::exists(dir.path("out"))) << arguments;
   }

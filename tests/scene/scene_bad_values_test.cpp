@@ -106,7 +106,8 @@ std::vector<Section> drape_sections(Base base) {
     sections.insert(sections.end(), {{"bending", "[bending]", {{"rigidity_Nm", "5e-5"}}},
                                      {"wind", "[wind]", {{"velocity_m_s", "[1.0, 0.0, -0.5]"}, {"coefficient_N_s_m3", "0.5"}}}});
   if (base == Base::circle)
-    sections.push_back({"drape", "[drape]", {{"support", "\"dome\""}, {"clamp_radius_m", "0.02"}}});
+    sections.insert(sections.end(), {{"drape", "[drape]", {{"support", "\"dome\""}, {"clamp_radius_m", "0.02"}}},
+                                     {"self_contact", "[self_contact]", {{"thickness_m", "5e-4"}}}});
   else
     sections.push_back({"drape", "[drape]", {{"support", "\"dome\""}}});
   return sections;
@@ -465,6 +466,8 @@ const std::vector<KeyRow>& key_table() {
       {"solver.name",                    T::only_extras, circle, _, _, _,  _,   _,    "",
        {{"relax_with_a_clamp", "\"relax\"", R, kSame}, {"dynamic_with_a_clamp", "\"dynamic\"", R, kSame}}},
       {"drape",                          T::table,     circle, A, _,  _,   _,   _,    "", {}},
+      {"self_contact",                   T::table,     circle, A, _,  _,   _,   _,    "", {}},
+      {"self_contact.thickness_m",       T::number,    circle, A, R,  R,   R,   _,    "", {}},
       // No support: a pin test, A_disc = 0.
       {"drape.support",                  T::text,      circle, A, _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb\"", R, kSame}, {"no_such_body", "\"mold\"", B, kSame}}},

@@ -255,7 +255,10 @@ const char* kTube =
     "weft = \"weft.csv\"\n"               // line 7
     "[initial]\n"                         // line 8
     "axis_m = [0, 0]\n"                   // line 9
-    "radius_m = 0.06\n";                  // line 10
+    "radius_m = 0.06\n"                   // line 10
+    "[solver]\n"                          // line 11
+    "name = \"newton\"\n"                 // line 12
+    "tolerance_N = 1e-3\n";               // line 13
 
 Scene load_text(const std::string& text) {
   test::TempDir dir;
@@ -299,6 +302,38 @@ TEST(LoadScene, BadTubesNameTheirKey) {
   const InputError not_a_tube = load_error(std::string(kMinimal) + "[initial]\nshape = \"tube\"\nradius_m = 0.1\n");
   EXPECT_EQ(not_a_tube.where().key, "initial.shape");
   EXPECT_NE(std::string(not_a_tube.what()).find("tube fabric"), std::string::npos) << not_a_tube.what();
+}
+
+TEST(LoadScene, SelfContactHasAThicknessAndOnlyNewton) {
+  std::string newton = kMinimal;
+  newton.replace(newton.find("[solver]\n"), 9, "[solver]\nname = \"newton\"\n");
+  const Scene scene = load_text(newton + "[self_contact]\n");
+  EXPECT_TRUE(scene.self_contact.on);
+  EXPECT_EQ(scene.self_contact.thickness_m, 0.5e-3);
+  EXPECT_EQ(load_text(newton + "[self_contact]\nthickness_m = 1e-3\n").self_contact.thickness_m, 1e-3);
+  EXPECT_EQ(load_error(newton + "[self_contact]\nthickness_m = -1e-3\n").where().key, "self_contact.thickness_m");
+  EXPECT_EQ(load_error(newton + "[self_contact]\nthickness_m = 0.5\n").where().key, "self_contact.thickness_m");
+  const InputError relax = load_error(std::string(kMinimal) + "[self_contact]\n");
+  EXPECT_EQ(relax.where().key, "solver.name");
+  EXPECT_NE(std::string(relax.what()).find("self-contact"), std::string::npos) << relax.what();
+}
+
+TEST(LoadScene, AFoldLiesInsideTheRectangle) {
+  const Scene scene = load_text(std::string(kMinimal) + "[initial]\nshape = \"fold\"\nfold_at_m = 0.05\nheight_m = 0.002\n");
+  EXPECT_EQ(scene.initial.kind, InitialShape::Kind::fold);
+  EXPECT_EQ(scene.initial.fold_at_m, 0.05);
+  EXPECT_EQ(load_error(std::string(kMinimal) + "[initial]\nshape = \"fold\"\nfold_at_m = 0.1\nheight_m = 0.002\n")
+                .where().key, "initial.fold_at_m");
+  EXPECT_EQ(load_error(std::string(kMinimal) + "[initial]\nshape = \"fold\"\nfold_at_m = 0.05\n").where().key,
+            "initial.height_m");
+}
+
+TEST(LoadScene, ATubeIsNewtonsAlone) {
+  std::string text = kTube;
+  text.replace(text.find("newton"), 6, "dynamic");
+  const InputError e = load_error(text);
+  EXPECT_EQ(e.where().key, "solver.name");
+  EXPECT_NE(std::string(e.what()).find("tube"), std::string::npos) << e.what();
 }
 
 TEST(LoadScene, OverridesReplaceValuesByDottedKey) {

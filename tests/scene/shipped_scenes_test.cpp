@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "fabform/analysis/contact_pressure.hpp"
+#include "fabform/analysis/ply_figures.hpp"
+#include "fabform/analysis/self_intersections.hpp"
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/seam.hpp"
 #include "fabform/model/force_scale.hpp"
@@ -104,7 +106,8 @@ INSTANTIATE_TEST_SUITE_P(Shipped, ShippedScene,
                                            // disc, so the overhang touches only its rim (8 nodes).
                                            SceneCase{"scenes/cusick.toml", "newton", 1e-6, 4},
                                            SceneCase{"scenes/cusick_woven.toml", "newton", 1e-6, 4},
-                                           SceneCase{"scenes/tube.toml", "newton", 1e-5, 1000, true}),
+                                           SceneCase{"scenes/tube.toml", "newton", 1e-5, 1000, true},
+                                           SceneCase{"scenes/fold.toml", "newton", 1e-7, 100}),
                          [](const auto& case_info) {
                            const std::string file = case_info.param.file;  // scenes/NAME.toml
                            return file.substr(7, file.size() - 12);
@@ -200,6 +203,40 @@ TEST(ShippedTube, PressesTheCylinderAsLaplaceSays) {
   ASSERT_EQ(seams.size(), 1u);
   EXPECT_NEAR(seams[0].tension_mean_N_m, model.warp.tension(strain), 0.01 * model.warp.tension(strain));
   EXPECT_LE(seams[0].gap_max_m, 1e-6);
+}
+
+// The knit folded in two on a table: with self-contact its upper ply rests on the lower one
+// thickness above it and CGAL's self-intersection test finds no crossing triangles; without it,
+// the same scene ends with the plies through one another, which the same test sees.
+TEST(ShippedFold, ThePliesRestApartAndCrossWithoutSelfContact) {
+  Scene scene = load_scene(test::source_path("scenes/fold.toml"));
+  for (const bool self_contact : {true, false}) {
+    scene.self_contact.on = self_contact;
+    const Model model = build_model(scene);
+    SolverState state = SolverState::at_start(model);
+    const Summary summary = solve(model, state, scene.solver);
+    ASSERT_TRUE(summary.converged()) << summary.message;
+    const int crossings = count_self_intersections(model, state.x);
+    if (!self_contact) {
+      EXPECT_GT(crossings, 100);
+      continue;
+    }
+    EXPECT_EQ(crossings, 0);
+    const std::optional<PlyFigures> plies = ply_figures(model, state.x);
+    ASSERT_TRUE(plies && plies->smallest_gap_m);
+    EXPECT_GT(plies->contact_pairs, 100);
+    // The plies' weight presses the penalty in by far less than a micrometre.
+    EXPECT_GT(*plies->smallest_gap_m, scene.self_contact.thickness_m - 1e-6);
+    // The upper ply (beyond the fold) lies a thickness above the lower, which lies on the table.
+    const Fabric& f = model.fabric;
+    const int fold = f.nodes_warp() / 2;
+    for (int j = 1; j + 1 < f.nodes_weft(); ++j) {
+      const double lower = state.x[static_cast<std::size_t>(f.node(fold / 2, j))].z();
+      const double upper = state.x[static_cast<std::size_t>(f.node(fold + fold / 2, j))].z();
+      EXPECT_NEAR(lower, 0.0, 1e-6) << j;
+      EXPECT_NEAR(upper - lower, scene.self_contact.thickness_m, 2e-5) << j;
+    }
+  }
 }
 
 }  // namespace

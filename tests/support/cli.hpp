@@ -64,4 +64,13 @@ inline int wait_for_exit(pid_t pid) {
 
 inline int line_count(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
+/// The lines of an error on stderr: all of them, or, after a usage error, those before the
+/// command's usage that follows it (its one-line description, then "Usage: fabform ...").
+inline int error_line_count(const std::string& err) {
+  const std::size_t usage = err.find("\nUsage: fabform");
+  if (usage == std::string::npos) return line_count(err);
+  const std::size_t description = err.rfind('\n', usage - 1);
+  return line_count(err.substr(0, description == std::string::npos ? 0 : description + 1));
+}
+
 }  // namespace fabform::test
