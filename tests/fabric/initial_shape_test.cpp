@@ -1,4 +1,4 @@
-// Initial shapes: flat, lift, bump and wrap positions, and which parameters are rejected.
+// Initial shapes: flat, lift, bump, wrap, tube and fold positions, and which parameters are rejected.
 #include "fabform/fabric/initial_shape.hpp"
 
 #include <gtest/gtest.h>
@@ -197,6 +197,70 @@ TEST(InitialShape, ParseKind) {
     Kind parsed = Kind::flat;
     EXPECT_FALSE(parse_initial_kind(name, &parsed)) << name;
   }
+}
+
+// A tube starts once round its axis: every node on the circle, its two seam edges on one another,
+// its length vertical from the origin's height; the warp round it or along it.
+TEST(InitialShape, ATubeGoesOnceRoundItsAxisWithItsSeamClosed) {
+  for (const FabricSpec::Tube tube : {FabricSpec::Tube::warp_round, FabricSpec::Tube::warp_along}) {
+    FabricSpec spec = kSpec;
+    spec.tube = tube;
+    const Fabric grid(spec);
+    InitialShape shape = shape_of(Kind::tube);
+    shape.axis_xy_m = Eigen::Vector2d(0.1, -0.2);
+    shape.radius_m = 0.07;
+    shape.facing_deg = 30.0;
+    const auto x = initial_positions(grid, kOrigin, shape);
+    const bool round_warp = tube == FabricSpec::Tube::warp_round;
+    for (int k = 0; k < grid.node_count(); ++k) {
+      const Eigen::Vector3d& p = x[static_cast<std::size_t>(k)];
+      EXPECT_NEAR((p.head<2>() - shape.axis_xy_m).norm(), 0.07, kTol);
+      const Eigen::Vector3d flat = grid.rest_position(k);
+      EXPECT_NEAR(p.z(), kOrigin.z() + (round_warp ? flat.y() : flat.x()), kTol);
+    }
+    const int last = round_warp ? grid.nodes_warp() - 1 : grid.nodes_weft() - 1;
+    for (int along = 0; along < (round_warp ? grid.nodes_weft() : grid.nodes_warp()); ++along) {
+      const int first = round_warp ? grid.node(0, along) : grid.node(along, 0);
+      const int other = round_warp ? grid.node(last, along) : grid.node(along, last);
+      EXPECT_LE((x[static_cast<std::size_t>(first)] - x[static_cast<std::size_t>(other)]).norm(), 1e-15);
+      // The seam faces facing_deg.
+      const Eigen::Vector2d facing(std::cos(30.0 * kPi / 180.0), std::sin(30.0 * kPi / 180.0));
+      EXPECT_NEAR((x[static_cast<std::size_t>(first)].head<2>() - shape.axis_xy_m).normalized().dot(facing), 1.0, 1e-12);
+    }
+  }
+}
+
+// A fold lays the part beyond the line back over the part before it, height_m above.
+TEST(InitialShape, AFoldMirrorsThePartBeyondTheLineOnTop) {
+  const Fabric grid(kSpec);
+  InitialShape shape = shape_of(Kind::fold, 0.004);
+  shape.fold_at_m = 0.25;
+  const auto x = initial_positions(grid, kOrigin, shape);
+  for (int k = 0; k < grid.node_count(); ++k) {
+    const Eigen::Vector3d flat = grid.rest_position(k);
+    const bool beyond = flat.x() > 0.25;
+    const Eigen::Vector3d expected =
+        kOrigin + Eigen::Vector3d(beyond ? 0.5 - flat.x() : flat.x(), flat.y(), beyond ? 0.004 : 0.0);
+    EXPECT_LE((x[static_cast<std::size_t>(k)] - expected).norm(), kTol) << k;
+  }
+  std::string field;
+  shape.fold_at_m = 0.0;
+  EXPECT_NE(shape.invalid_reason(&field), "");
+  EXPECT_EQ(field, "fold_at_m");
+  EXPECT_NE(shape_of(Kind::fold, 0.0).invalid_reason(&field), "");
+}
+
+TEST(InitialShape, ATubeNeedsThreeDivisionsRoundItAndARectangle) {
+  FabricSpec spec = kSpec;
+  spec.tube = FabricSpec::Tube::warp_round;
+  spec.divisions_warp = 2;
+  EXPECT_NE(spec.invalid_reason(), "");
+  spec.tube = FabricSpec::Tube::warp_along;
+  EXPECT_EQ(spec.invalid_reason(), "");  // 6 weft divisions round it
+  spec.shape = FabricSpec::Shape::circle;
+  spec.width_m = spec.height_m;
+  spec.divisions_warp = spec.divisions_weft;
+  EXPECT_NE(spec.invalid_reason().find("tube"), std::string::npos) << spec.invalid_reason();
 }
 
 }  // namespace
