@@ -62,6 +62,8 @@ bool SelfContact::excluded(int node, int triangle) const {
 
 std::vector<ProximityPair> SelfContact::pairs(const Positions& x, double reach_m) const {
   const double reach = reach_m > 0.0 ? reach_m : thickness_;
+  // A broken state (a NaN or infinity, which the solvers report) has no cubes to bin it in.
+  if (!std::all_of(x.begin(), x.end(), [](const Eigen::Vector3d& p) { return p.allFinite(); })) return {};
   const auto at = [&](int n) -> const Eigen::Vector3d& { return x[static_cast<std::size_t>(n)]; };
   std::vector<Eigen::Vector3d> centre(triangles_.size());
   double radius = 0.0;

@@ -216,6 +216,10 @@ std::string result_json(const RunRecord& run, const StateFigures& state, const C
     constraints.push_back({{"nodes", c.nodes_text}, {"axes", axes_to_string(c.axes)}});
   j["constraints"] = constraints;
   j["warnings"] = run.warnings;
+  // How many coarser grids were asked for, and who chose them (a scene's key, or fabform from
+  // the fabric's size); "continuation" lists those solved.
+  j["continuation_levels"] = run.scene.solver.continuation_levels;
+  j["continuation_chosen_by"] = run.scene.solver.continuation_chosen ? "fabform" : "scene";
   if (run.continuation && !run.continuation->empty()) {
     // The top-level figures stay the scene's own grid's; these are the coarser grids before it.
     nlohmann::json levels = nlohmann::json::array();

@@ -876,6 +876,10 @@ Scene read_scene(const toml::table& root, const std::string& path,
   if (scene.clamp.on && scene.solver.name != "newton")
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only newton models, not " + scene.solver.name);
+  if (!solver.has("continuation_levels")) {
+    scene.solver.continuation_levels = chosen_continuation_levels(scene);
+    scene.solver.continuation_chosen = true;
+  }
   std::string continuation_key;
   if (const std::string why = continuation_refusal(scene, &continuation_key); !why.empty())
     solver.fail(continuation_key, why);

@@ -25,6 +25,18 @@ std::vector<std::array<int, 2>> continuation_grids(const Scene& scene) {
   return grids;
 }
 
+int chosen_continuation_levels(const Scene& scene) {
+  std::array<int, 2> d = {scene.fabric.divisions_warp, scene.fabric.divisions_weft};
+  int levels = 0;
+  while (d[0] % 2 == 0 && d[1] % 2 == 0 && std::min(d[0], d[1]) / 2 >= kChosenCoarsestDivisions)
+    d = {d[0] / 2, d[1] / 2}, ++levels;
+  if (levels == 0) return 0;
+  Scene continued = scene;
+  continued.solver.continuation_levels = levels;
+  std::string key;
+  return continuation_refusal(continued, &key).empty() ? levels : 0;
+}
+
 namespace {
 
 // The first division count on the way down that does not halve, or 0.

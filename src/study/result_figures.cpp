@@ -25,7 +25,7 @@ std::vector<std::string> result_figure_paths(const Scene& scene) {
       "figures.deepest_spring_cut_m", "figures.sliding_nodes", "figures.stuck_nodes", "figures.shear_angle_max_deg",
       "figures.thickness_ratio_min", "figures.wrinkle_cells", "figures.locking_angle_deg", "figures.contact_pressure_max_Pa",
       "figures.contact_pressure_max_mmHg", "figures.contact_pressure_mean_Pa", "figures.contact_pressure_mean_mmHg",
-      "fabric.nodes", "fabric.faces",
+      "fabric.nodes", "fabric.faces", "continuation_levels",
       "fabric.springs.warp", "fabric.springs.weft", "fabric.springs.shear", "fabric.springs.bend"};
   for (const char* peak : kPeaks) {
     paths.emplace_back(peak);
@@ -35,6 +35,10 @@ std::vector<std::string> result_figure_paths(const Scene& scene) {
   if (scene.drape.on)
     for (const char* p : {"drape_coefficient", "drape.coefficient", "drape.shadow_area_m2", "drape.specimen_area_m2",
                           "drape.support_area_m2", "drape.folds", "drape.shadow_pieces"})
+      paths.emplace_back(p);
+  if (scene.self_contact.on)
+    for (const char* p : {"self_contact.thickness_m", "self_contact.contact_pairs", "self_contact.smallest_gap_m",
+                          "self_contact.intersecting_triangle_pairs"})
       paths.emplace_back(p);
   if (std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const BodySpec& b) { return b.path.moves(); }))
     paths.emplace_back("load_steps");

@@ -155,5 +155,15 @@ TEST(SelfContact, LeavesAFlatFabricAndItsSewnNodesAlone) {
   EXPECT_THROW(SelfContact(f, unsewn(f.node_count()), -1e-3, 1e3), std::invalid_argument);
 }
 
+// A broken state (the solvers report its NaN) has no pairs rather than cubes at NaN.
+TEST(SelfContact, ABrokenStateHasNoPairs) {
+  const Fabric f = strip(6, 2);
+  const SelfContact contact(f, unsewn(f.node_count()), kThickness, 1e3);
+  Positions x = folded(f, 0.5e-3, 1);
+  ASSERT_FALSE(contact.pairs(x).empty());
+  x[3].y() = std::nan("");
+  EXPECT_TRUE(contact.pairs(x).empty());
+}
+
 }  // namespace
 }  // namespace fabform

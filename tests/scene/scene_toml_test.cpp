@@ -336,6 +336,28 @@ TEST(LoadScene, ATubeIsNewtonsAlone) {
   EXPECT_NE(std::string(e.what()).find("tube"), std::string::npos) << e.what();
 }
 
+// Without solver.continuation_levels, fabform halves the grid while both divisions stay even
+// and the coarsest keeps 50 divisions, where the scene can be continued (newton, no travel);
+// the scene's own key, 0 included, is kept.
+TEST(LoadScene, ContinuationIsChosenFromTheFabricsSizeUnlessGiven) {
+  const auto levels_for = [](const std::string& divisions, const std::string& solver) {
+    std::string text = kMinimal;
+    text.replace(text.find("divisions = [4, 8]"), 18, "divisions = " + divisions);
+    text.replace(text.find("[solver]\n"), 9, "[solver]\n" + solver);
+    return load_text(text).solver;
+  };
+  EXPECT_EQ(levels_for("[400, 400]", "name = \"newton\"\n").continuation_levels, 3);  // 200, 100, 50
+  EXPECT_TRUE(levels_for("[400, 400]", "name = \"newton\"\n").continuation_chosen);
+  EXPECT_EQ(levels_for("[200, 100]", "name = \"newton\"\n").continuation_levels, 1);  // 100 x 50
+  EXPECT_EQ(levels_for("[1000, 1000]", "name = \"newton\"\n").continuation_levels, 3);  // 125 does not halve
+  EXPECT_EQ(levels_for("[99, 400]", "name = \"newton\"\n").continuation_levels, 0);
+  EXPECT_EQ(levels_for("[40, 40]", "name = \"newton\"\n").continuation_levels, 0);
+  EXPECT_EQ(levels_for("[400, 400]", "").continuation_levels, 0);  // relax
+  const SolverSpec given = levels_for("[400, 400]", "name = \"newton\"\ncontinuation_levels = 0\n");
+  EXPECT_EQ(given.continuation_levels, 0);
+  EXPECT_FALSE(given.continuation_chosen);
+}
+
 TEST(LoadScene, OverridesReplaceValuesByDottedKey) {
   test::TempDir dir;
   const std::string path = dir.write("scene.toml", kMinimal);

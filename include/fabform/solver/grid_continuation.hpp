@@ -18,6 +18,15 @@ namespace fabform {
 
 // Below this many divisions a grid no longer resolves the scene's shape: no coarser level is made.
 constexpr int kMinContinuationDivisions = 8;
+// fabform's own choice coarsens no further than this many divisions: on the dome a coarser start
+// saves less than its solve costs (N = 201: 3.05 s with none, 1.29 s with two levels, to 50
+// divisions; docs/speed.md "Grid continuation").
+constexpr int kChosenCoarsestDivisions = 50;
+
+/// The levels fabform chooses for a scene that gives none: as many halvings as keep both
+/// divisions even and the coarsest grid at kChosenCoarsestDivisions or more, where the scene can
+/// be continued at all (continuation_refusal); else 0.
+int chosen_continuation_levels(const Scene& scene);
 
 /// The divisions (warp, weft) of the coarser grids to solve, coarsest first; empty when
 /// solver.continuation_levels is 0 or the grid is too small to coarsen. The scene must be

@@ -26,8 +26,10 @@ struct SolverSpec {
   // newtons once its model is built (set_tolerance_N).
   double tolerance_relative = 0.0;
   // Grid continuation (grid_continuation.hpp): at most this many coarser grids, each half the
-  // last's divisions, solved first to give this grid its start; 0: none. Newton's alone.
+  // last's divisions, solved first to give this grid its start; 0: none. Newton's alone. A scene
+  // that gives none gets fabform's choice from its fabric's size (chosen_continuation_levels).
   int continuation_levels = 0;
+  bool continuation_chosen = false;  // fabform chose continuation_levels, not the scene
   // A load step that does not converge (load_steps.hpp) is cut in half and solved again, a half
   // that does not is cut again, down to 1/2^max_step_cuts of the step; 0: never cut. 0 … 20.
   int max_step_cuts = 4;
