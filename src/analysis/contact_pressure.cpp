@@ -99,22 +99,22 @@ ContactPressure contact_pressure(const Model& model, const std::vector<Eigen::Ve
   const std::vector<int> sewn = sewn_representatives(model);
   const std::vector<Eigen::Vector3d> forces = node_forces(model, x);
   std::vector<double> lambda(x.size(), 0.0), sewn_lambda(x.size(), 0.0), sewn_area(x.size(), 0.0);
+  const auto presses = [&](std::size_t i) { return (contact[i] || over_edges[i] != 0.0) && area[i] > 0.0; };
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
-    if ((!contact[i] && over_edges[i] == 0.0) || !(area[i] > 0.0)) continue;
+    if (!presses(i)) continue;
     lambda[i] = (contact[i] ? reaction_N(model, x, forces[i], k, queries) : 0.0) + over_edges[i];
     sewn_lambda[static_cast<std::size_t>(sewn[i])] += lambda[i];
     sewn_area[static_cast<std::size_t>(sewn[i])] += area[i];
   }
   for (int k = 0; k < model.node_count(); ++k) {
     const auto i = static_cast<std::size_t>(k);
-    if ((!contact[i] && over_edges[i] == 0.0) || !(area[i] > 0.0)) continue;
-    const double lambda_i = lambda[i];
+    if (!presses(i)) continue;
     const auto group = static_cast<std::size_t>(sewn[i]);
     p.node_Pa[i] = sewn_lambda[group] / sewn_area[group];
-    if (lambda_i > 0.0) force += lambda_i, contact_area += area[i];  // the mean is over the area that presses
+    if (lambda[i] > 0.0) force += lambda[i], contact_area += area[i];  // the mean is over the area that presses
     if (p.max_node < 0 || p.node_Pa[i] > p.max_Pa) p.max_Pa = p.node_Pa[i], p.max_node = k;
-    if (lambda_i > 0.0) pressing.push_back(k), reach.push_back(reach_m(model.fabric, x, k));
+    if (lambda[i] > 0.0) pressing.push_back(k), reach.push_back(reach_m(model.fabric, x, k));
   }
   p.mean_Pa = contact_area > 0.0 ? force / contact_area : 0.0;
   for (const RigidBody& body : model.bodies)

@@ -59,7 +59,7 @@ const std::vector<Eigen::Vector2d>* largest_outline(const Shadow& shadow) {
 std::vector<std::pair<double, double>> flat_outline(const Fabric& fabric, double window_m) {
   std::vector<Eigen::Vector3d> rest;
   for (int k = 0; k < fabric.node_count(); ++k) rest.push_back(fabric.rest_position(k));
-  const Shadow flat = fabric_shadow(rest, fabric_triangles(fabric));
+  const Shadow flat = fabric_shadow(rest, face_triangles(fabric.faces()));
   const double r = fabric.spec().radius_m();
   std::vector<std::pair<double, double>> polar;
   for (const Eigen::Vector2d& p : smoothed(*largest_outline(flat), window_m)) {
@@ -95,23 +95,13 @@ std::vector<Eigen::Vector2d> as_if_round(std::vector<Eigen::Vector2d> outline,
 }
 }  // namespace
 
-std::vector<std::array<int, 3>> fabric_triangles(const Fabric& fabric) {
-  std::vector<std::array<int, 3>> triangles;
-  triangles.reserve(2 * fabric.faces().size());
-  for (const Face& f : fabric.faces()) {
-    triangles.push_back({f.corner[0], f.corner[1], f.corner[2]});
-    if (f.corners == 4) triangles.push_back({f.corner[0], f.corner[2], f.corner[3]});
-  }
-  return triangles;
-}
-
 double support_area(const TriangleMesh& mesh) {
   return fabric_shadow(mesh.vertices, mesh.triangles).area_m2;
 }
 
 DrapeFigures drape_figures(const Fabric& fabric, const std::vector<Eigen::Vector3d>& x,
                            const Eigen::Vector2d& centre_m, double support_area_m2) {
-  const Shadow shadow = fabric_shadow(x, fabric_triangles(fabric));
+  const Shadow shadow = fabric_shadow(x, face_triangles(fabric.faces()));
   DrapeFigures f;
   f.shadow_area_m2 = shadow.area_m2;
   f.specimen_area_m2 = fabric.flat_area();

@@ -58,10 +58,7 @@ PrintMap print_map(const Fabric& fabric, const std::vector<Eigen::Vector3d>& fla
     map.blank_uv.push_back(frame.uv(flat[k]));
     map.developed_uv.push_back(frame.uv(x[k]));
   }
-  for (const Face& f : fabric.faces()) {
-    map.triangles.push_back({f.corner[0], f.corner[1], f.corner[2]});
-    if (f.corners == 4) map.triangles.push_back({f.corner[0], f.corner[2], f.corner[3]});
-  }
+  map.triangles = face_triangles(fabric.faces());
   return map;
 }
 

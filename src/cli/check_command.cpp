@@ -38,9 +38,9 @@ bool ends_with_obj(const std::string& path) {
 CheckArguments read_arguments(const CLI::App& command) {
   refuse_leftovers(command, "only one mesh can be checked at a time");
   CheckArguments parsed;
-  if (!values_of(command, "MESH").empty()) parsed.mesh = values_of(command, "MESH").front();
-  if (!values_of(command, "--units").empty()) parsed.units = values_of(command, "--units").front();
-  if (!values_of(command, "--repair").empty()) parsed.repair_out = values_of(command, "--repair").front();
+  if (const std::string* v = given(command, "MESH")) parsed.mesh = *v;
+  if (const std::string* v = given(command, "--units")) parsed.units = *v;
+  if (const std::string* v = given(command, "--repair")) parsed.repair_out = *v;
   if (parsed.mesh.empty()) throw usage_error("MESH", "missing: fabform check MESH [--units U] [--repair OUT.obj]");
   double unused = 0.0;
   if (parsed.units && !parse_length_unit(*parsed.units, &unused))

@@ -18,4 +18,9 @@ const std::vector<std::string>& values_of(const CLI::App& command, const std::st
   return command.get_option(option)->results();
 }
 
+const std::string* given(const CLI::App& command, const std::string& option) {
+  const std::vector<std::string>& values = values_of(command, option);
+  return values.empty() ? nullptr : &values.back();
+}
+
 }  // namespace fabform::cli

@@ -48,4 +48,7 @@ InputError usage_error(const std::string& option, const std::string& why);
 /// Every value the command line gave an option, in order (none when it was not given).
 const std::vector<std::string>& values_of(const CLI::App& command, const std::string& option);
 
+/// The last value the command line gave an option, or null when it gave none.
+const std::string* given(const CLI::App& command, const std::string& option);
+
 }  // namespace fabform::cli

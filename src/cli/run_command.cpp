@@ -73,9 +73,9 @@ std::vector<SceneOverride> overrides_in_order(const CLI::App& command) {
 RunArguments read_arguments(const CLI::App& command) {
   refuse_leftovers(command, "only one scene can be run at a time");
   RunArguments parsed;
-  if (!values_of(command, "SCENE").empty()) parsed.scene = values_of(command, "SCENE").front();
-  if (!values_of(command, "--out").empty()) parsed.out = values_of(command, "--out").back();
-  if (!values_of(command, "--resume").empty()) parsed.resume = values_of(command, "--resume").back();
+  if (const std::string* v = given(command, "SCENE")) parsed.scene = *v;
+  if (const std::string* v = given(command, "--out")) parsed.out = *v;
+  if (const std::string* v = given(command, "--resume")) parsed.resume = *v;
   parsed.quiet = command.count("--quiet") > 0;
   parsed.overrides = overrides_in_order(command);
   if (parsed.resume && (!parsed.scene.empty() || parsed.out || !parsed.overrides.empty()))

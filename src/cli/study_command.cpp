@@ -55,19 +55,15 @@ int count_value(const std::string& flag, const std::string& text, int high) {
 StudyArguments read_arguments(const CLI::App& command) {
   refuse_leftovers(command, "only one study can be run at a time");
   StudyArguments parsed;
-  const auto given = [&](const char* option) -> const std::string* {
-    const std::vector<std::string>& values = values_of(command, option);
-    return values.empty() ? nullptr : &values.front();
-  };
-  if (const std::string* v = given("STUDY")) parsed.study = *v;
-  if (const std::string* v = given("--out")) parsed.out = *v;
-  if (const std::string* v = given("--resume")) parsed.resume = *v;
-  if (const std::string* v = given("--on")) parsed.on = *v;
-  if (const std::string* v = given("--jobs")) parsed.jobs = count_value("--jobs", *v, 10000);
-  if (const std::string* v = given("--threads-per-case")) parsed.threads_per_case = count_value("--threads-per-case", *v, 1024);
-  if (const std::string* v = given("--partition")) parsed.partition = *v;
-  if (const std::string* v = given("--time-limit")) parsed.time_limit_min = count_value("--time-limit", *v, 10000000);
-  if (const std::string* v = given("--mem-mb")) parsed.mem_mb = count_value("--mem-mb", *v, 100000000);
+  if (const std::string* v = given(command, "STUDY")) parsed.study = *v;
+  if (const std::string* v = given(command, "--out")) parsed.out = *v;
+  if (const std::string* v = given(command, "--resume")) parsed.resume = *v;
+  if (const std::string* v = given(command, "--on")) parsed.on = *v;
+  if (const std::string* v = given(command, "--jobs")) parsed.jobs = count_value("--jobs", *v, 10000);
+  if (const std::string* v = given(command, "--threads-per-case")) parsed.threads_per_case = count_value("--threads-per-case", *v, 1024);
+  if (const std::string* v = given(command, "--partition")) parsed.partition = *v;
+  if (const std::string* v = given(command, "--time-limit")) parsed.time_limit_min = count_value("--time-limit", *v, 10000000);
+  if (const std::string* v = given(command, "--mem-mb")) parsed.mem_mb = count_value("--mem-mb", *v, 100000000);
   parsed.quiet = command.count("--quiet") > 0;
   if (parsed.on != "local" && parsed.on != "slurm") throw usage_error("--on", "must be local or slurm");
   if (parsed.on == "local" && (!parsed.partition.empty() || parsed.time_limit_min || parsed.mem_mb))

@@ -89,6 +89,7 @@ double face_area(const Face& face, const std::vector<Eigen::Vector3d>& x) {
 
 std::vector<std::array<int, 3>> face_triangles(const std::vector<Face>& faces) {
   std::vector<std::array<int, 3>> triangles;
+  triangles.reserve(2 * faces.size());
   for (const Face& f : faces) {
     triangles.push_back({f.corner[0], f.corner[1], f.corner[2]});
     if (f.corners == 4) triangles.push_back({f.corner[0], f.corner[2], f.corner[3]});

@@ -37,16 +37,13 @@ Coefficients coefficients(const Stitch& s) {
   return k;
 }
 
-Eigen::Vector3d gap(const Stitch& s, const Positions& x) {
-  const auto at = [&](int n) { return x[static_cast<std::size_t>(n)]; };
-  return at(s.node) - (1.0 - s.t) * at(s.first) - s.t * at(s.second);
-}
-
-// The same with `node` moved to `at`.
+// The gap with `node` moved to `at` (none moved: node −1).
 Eigen::Vector3d gap_moved(const Stitch& s, const Positions& x, int node, const Eigen::Vector3d& at) {
   const auto where = [&](int n) { return n == node ? at : x[static_cast<std::size_t>(n)]; };
   return where(s.node) - (1.0 - s.t) * where(s.first) - s.t * where(s.second);
 }
+
+Eigen::Vector3d gap(const Stitch& s, const Positions& x) { return gap_moved(s, x, -1, Eigen::Vector3d::Zero()); }
 
 // Each node's fraction of its chain's flat length.
 std::vector<double> arc_fractions(const Fabric& fabric, const std::vector<int>& chain, double* length) {
@@ -192,9 +189,8 @@ std::string SeamTerm::refusal(const std::string& solver) const {
 
 std::vector<SeamFigures> seam_figures(const Model& model, const Positions& x) {
   std::vector<SeamFigures> all;
-  for (const auto& term : model.terms)
-    if (const auto* seams = dynamic_cast<const SeamTerm*>(term.get()))
-      for (SeamFigures& f : seams->figures(x)) all.push_back(std::move(f));
+  for (const SeamTerm* seams : terms_of<SeamTerm>(model))
+    for (SeamFigures& f : seams->figures(x)) all.push_back(std::move(f));
   return all;
 }
 
@@ -205,14 +201,13 @@ std::vector<int> sewn_representatives(const Model& model) {
     while (root[static_cast<std::size_t>(n)] != n) n = root[static_cast<std::size_t>(n)] = root[static_cast<std::size_t>(root[static_cast<std::size_t>(n)])];
     return n;
   };
-  for (const auto& term : model.terms)
-    if (const auto* seams = dynamic_cast<const SeamTerm*>(term.get()))
-      for (const Seam& seam : seams->seams())
-        for (const Stitch& s : seam.stitches) {
-          if (s.t != 0.0 && s.t != 1.0) continue;
-          const int a = find(s.node), b = find(s.t == 0.0 ? s.first : s.second);
-          root[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-        }
+  for (const SeamTerm* seams : terms_of<SeamTerm>(model))
+    for (const Seam& seam : seams->seams())
+      for (const Stitch& s : seam.stitches) {
+        if (s.t != 0.0 && s.t != 1.0) continue;
+        const int a = find(s.node), b = find(s.t == 0.0 ? s.first : s.second);
+        root[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+      }
   for (std::size_t k = 0; k < root.size(); ++k) root[k] = find(static_cast<int>(k));
   return root;
 }

@@ -20,9 +20,6 @@ struct DrapeFigures {
   int shadow_pieces = 0;
 };
 
-/// The fabric's faces as triangles (a four-sided face split at corner 0), node indices.
-std::vector<std::array<int, 3>> fabric_triangles(const Fabric& fabric);
-
 /// The shadow area of a body's triangles (m²), the A_disc of a Cusick test.
 double support_area(const TriangleMesh& mesh);
 

@@ -63,6 +63,15 @@ struct Model {
   int load_steps() const;
 };
 
+/// The model's terms of type T, in the model's order (the seams, the self-contact, ...).
+template <class T>
+std::vector<const T*> terms_of(const Model& model) {
+  std::vector<const T*> found;
+  for (const auto& term : model.terms)
+    if (const auto* t = dynamic_cast<const T*>(term.get())) found.push_back(t);
+  return found;
+}
+
 /// R at `node` with the node moved to `at` and every other node where `x` has it: the sum of
 /// every term's force on it (for a velocity-dependent term, its force on the fabric at rest).
 Eigen::Vector3d node_force_at(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at);
