@@ -28,6 +28,8 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 import plot_convergence as pc  # noqa: E402  (shared reader, plot and InputError)
 import raster  # noqa: E402
+import view3d  # noqa: E402
+import vtk_files  # noqa: E402
 
 VIEW = {"elevation_deg": 35, "azimuth_deg": -60}
 
@@ -49,27 +51,6 @@ def read_obj(path: pathlib.Path) -> tuple:
     if any(i < 0 or i >= len(vertices) for face in faces for i in face):
         raise pc.InputError(f"{path}: a face refers to a vertex it does not have")
     return vertices, faces
-
-
-def read_vtk_fields(path: pathlib.Path) -> dict:
-    """The POINT_DATA and CELL_DATA scalars of a VTK file fabform wrote, by name."""
-    if not path.is_file():
-        raise pc.InputError(f"{path}: no such file")
-    lines = path.read_text().splitlines()
-    fields, at = {}, 0
-    while at < len(lines):
-        words = lines[at].split()
-        if words[:1] in (["POINT_DATA"], ["CELL_DATA"]):
-            count = int(words[1])
-        if words[:1] == ["SCALARS"]:
-            try:
-                fields[words[1]] = [float(v) for v in lines[at + 2: at + 2 + count]]
-            except (ValueError, UnboundLocalError):
-                raise pc.InputError(f"{path}:{at + 1}: field {words[1]} is malformed")
-            at += 2 + count
-            continue
-        at += 1
-    return fields
 
 
 def save_figure(fig, path: pathlib.Path) -> pathlib.Path:
@@ -365,7 +346,7 @@ def summary_rows(result: dict) -> list:
     return rows
 
 
-def page(result: dict, pictures: list) -> str:
+def page(result: dict, pictures: list, view: str) -> str:
     e = html.escape
     converged = result.get("converged", False)
     banner = ("" if converged else
@@ -392,7 +373,7 @@ th, td {{ text-align: left; padding: 0.25em 0.8em; border-bottom: 1px solid #ddd
 figure {{ display: inline-block; margin: 0 1em 1em 0; }} img {{ max-width: 34em; }}
 .alarm {{ background: #fdd; border: 2px solid #c00; padding: 0.6em; font-weight: bold; }}
 .missing {{ color: #c00; font-weight: bold; }}
-</style></head>
+{view3d.VIEW_CSS}</style></head>
 <body>
 <h1>{e(result['scene'])}: {e(result['termination'])}</h1>
 {banner}
@@ -400,6 +381,7 @@ figure {{ display: inline-block; margin: 0 1em 1em 0; }} img {{ max-width: 34em;
 <table>
 {rows}
 </table>
+{view}
 <h2>Pictures</h2>
 {figures}
 {steps_section}
@@ -438,7 +420,8 @@ def make_report(run: pathlib.Path) -> pathlib.Path:
         if key not in result:
             raise pc.InputError(f"{run / 'result.json'}: no '{key}' (written by an older fabform?)")
     fabric = read_obj(run / "fabric.obj")
-    fields = read_vtk_fields(run / "fabric.vtk")
+    formed = vtk_files.read_legacy(run / "fabric.vtk")
+    fields = {**formed.point_fields, **formed.cell_fields}
     bodies = read_obj(run / "bodies.obj") if (run / "bodies.obj").is_file() else None
     pc.plot_run(run, run / "convergence")
     pictures = []
@@ -461,7 +444,7 @@ def make_report(run: pathlib.Path) -> pathlib.Path:
         draw_in_map(run, fabric, read_obj(run / "blank.obj"), fields["draw_in_m"])
         pictures.append(("draw_in.png", "draw-in round the blank's edge"))
     if bodies:
-        pressure = read_vtk_fields(run / "bodies.vtk")
+        pressure = vtk_files.read_legacy(run / "bodies.vtk").point_fields
         if "contact_pressure_Pa" not in pressure:
             raise pc.InputError(f"{run / 'bodies.vtk'}: no field contact_pressure_Pa")
         pressure_map(run, fabric, bodies, pressure["contact_pressure_Pa"])
@@ -474,7 +457,7 @@ def make_report(run: pathlib.Path) -> pathlib.Path:
         steps_picture(run, result["steps"])
         pictures.append(("steps.png", "load steps: strain and draw-in against the tool's travel"))
     path = run / "report.html"
-    write_text(path, page(result, pictures))
+    write_text(path, page(result, pictures, view3d.write_view(run, result)))
     return path
 
 

@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-packages=(cmake g++ make pkg-config python3 python3-matplotlib python3-numpy chromium
+packages=(cmake g++ make pkg-config python3 python3-matplotlib python3-numpy chromium libjs-three
           libeigen3-dev libassimp-dev libembree-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libcoin-dev libtinyxml2-dev
           libcgal-dev libsuitesparse-dev libhypre-dev libopenblas-dev libssl-dev libpng-dev
           libgtest-dev clang libclang-rt-14-dev slurm-wlm munge)

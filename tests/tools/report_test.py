@@ -36,13 +36,20 @@ def fabform_run(out: pathlib.Path, *extra: str) -> int:
     return subprocess.run(command, stderr=subprocess.PIPE).returncode
 
 
-def open_in_chromium(page: pathlib.Path) -> tuple:
-    """(the DOM after load, the console lines) of the page in headless Chromium."""
+# WebGL on SwiftShader, Chromium's software renderer (these machines have no GPU), asked for by
+# name: the automatic fallback prints a deprecation to the console.
+SOFTWARE_WEBGL = ["--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"]
+NO_WEBGL = ["--disable-gpu", "--disable-software-rasterizer"]
+
+
+def open_in_chromium(page: pathlib.Path, fragment: str = "", webgl: bool = True) -> tuple:
+    """(the DOM after load, the console lines) of the page in headless Chromium, its address
+    ending in `fragment` (e.g. "#node=3")."""
     with tempfile.TemporaryDirectory() as profile:
         done = subprocess.run(
-            ["chromium", "--headless", "--no-sandbox", "--disable-gpu", f"--user-data-dir={profile}",
-             "--enable-logging=stderr", "--v=0", "--virtual-time-budget=10000",
-             "--dump-dom", page.resolve().as_uri()],
+            ["chromium", "--headless", "--no-sandbox", *(SOFTWARE_WEBGL if webgl else NO_WEBGL),
+             f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0", "--virtual-time-budget=10000",
+             "--dump-dom", page.resolve().as_uri() + fragment],
             capture_output=True, text=True, timeout=120)
     console = [line for line in done.stderr.splitlines() if ":CONSOLE" in line]
     return done.stdout, console
