@@ -20,8 +20,10 @@ under it (its placed bounding box, read from the STL here, rotations as fabform 
 - punch: the part's top 2 mm under the blank, pushed up 20 mm (the 12.7 mm plate 12 mm, so the
   blank stays above its lower face) in 10 load steps; a blank holder grips a 15 mm frame
   ([clamp] force_N 40, friction 0.3).
-- die: the blank's perimeter held in x, y and z 2 mm less than that travel below the part's top,
-  its inside lifted 5 mm clear of the part, and a vacuum of 3000 Pa ([pressure]) pulls it on.
+- die: vacuum forming over the part standing on the machine's table (a 5 mm slab under the
+  blank, its top at the part's lowest point, written beside the scene as OUT/scenes/table_*.obj):
+  the blank's perimeter held in x, y and z 1 mm above the table, its inside lifted 5 mm clear of
+  the part, and a vacuum of 3000 Pa ([pressure]) pulls it onto the part and the table round it.
 Resolutions 40 and 60 divisions; orientations as is, turned 90° about z, tilted 10° about x;
 μ 0 and 0.3; variants nodes (no key), wrap (`wrap_edges_deg = 30`) and edges
 (`edge_contact_deg = 2`). newton, tolerance_N 1e-5, max_iterations 300 (a step).
@@ -57,6 +59,9 @@ import sys
 import threading
 import time
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import generated_mesh  # noqa: E402  (OBJ text)
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 FABFORM = pathlib.Path(os.environ.get("FABFORM_BINARY", ROOT / "build" / "fabform"))
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "in": 0.0254}
@@ -76,6 +81,8 @@ MARGIN_M = 0.03          # blank beyond the part's placed footprint, each side
 GAP_M = 0.002            # the punch's top under the blank at the start
 STEPS = 10
 CLEARANCE_M = 0.005      # the die's lifted blank above the part's top
+TABLE_GAP_M = 0.001      # the die's table under the blank's held perimeter
+TABLE_THICKNESS_M = 0.005
 VACUUM_PA = 3000.0
 TOLERANCE_N = 1e-5
 MAX_ITERATIONS = 300
@@ -133,10 +140,11 @@ def scene_text(case: dict, variant_angle: float) -> str:
     divisions = [max(4, round(width / spacing)), max(4, round(height / spacing))]
     centre = ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2)
     if case["mode"] == "punch":
+        translation = [-centre[0], -centre[1], -GAP_M - hi[2]]
         top = -GAP_M
-    else:
-        top = travel - GAP_M     # the perimeter (z = 0) this far under the part's top
-    translation = [-centre[0], -centre[1], top - hi[2]]
+    else:   # standing on the table, its top TABLE_GAP_M under the perimeter (z = 0)
+        translation = [-centre[0], -centre[1], -TABLE_GAP_M - lo[2]]
+        top = hi[2] - lo[2] - TABLE_GAP_M
     variant = VARIANT_KEYS[case["variant"]]
     lines = [
         f"# tools/bench_cad_contact.py: {case['name']}",
@@ -157,12 +165,24 @@ def scene_text(case: dict, variant_angle: float) -> str:
         lines += ["", "[body.path]", f"translation_m = [0.0, 0.0, {travel:g}]", f"steps = {STEPS}",
                   "", "[clamp]", "width_m = 0.015", "force_N = 40.0", "friction = 0.3"]
     else:
-        lines += ["", "[[constraint]]", 'nodes = "perimeter"', 'axes = "xyz"',
+        table = case["scene"].with_name(f"table_{case['name']}.obj")
+        table.write_text(table_obj(width + 2 * MARGIN_M, height + 2 * MARGIN_M, -TABLE_GAP_M))
+        lines += ["", "[[body]]", 'name = "table"', f'mesh = "{table}"', 'units = "m"', f"friction = {case['mu']:g}",
+                  "", "[[constraint]]", 'nodes = "perimeter"', 'axes = "xyz"',
                   "", "[pressure]", f"pressure_Pa = {VACUUM_PA:g}",
                   "", "[initial]", 'shape = "lift"', f"height_m = {top + CLEARANCE_M:.4f}"]
     lines += ["", "[solver]", 'name = "newton"', f"tolerance_N = {TOLERANCE_N:g}",
               f"max_iterations = {MAX_ITERATIONS}", ""]
     return "\n".join(lines)
+
+
+def table_obj(width: float, height: float, top: float) -> str:
+    """The vacuum table: a slab TABLE_THICKNESS_M thick, centred on the z axis, its top at `top`."""
+    xs, ys, zs = (-width / 2, width / 2), (-height / 2, height / 2), (top - TABLE_THICKNESS_M, top)
+    vertices = [(x, y, z) for z in zs for y in ys for x in xs]   # 1..4 bottom, 5..8 top
+    faces = [(1, 3, 4), (1, 4, 2), (5, 6, 8), (5, 8, 7), (1, 2, 6), (1, 6, 5),
+             (2, 4, 8), (2, 8, 6), (4, 3, 7), (4, 7, 8), (3, 1, 5), (3, 5, 7)]
+    return generated_mesh.obj_text("vacuum table (tools/bench_cad_contact.py)", vertices, faces)
 
 
 RUNNING = set()

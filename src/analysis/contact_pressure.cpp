@@ -21,12 +21,17 @@ std::vector<double> tributary_areas(const Fabric& fabric, const std::vector<Eige
   return area;
 }
 
-// The body's reaction on a node it touches: the nearest body's normal decides the direction.
+// The body's reaction on a node it touches: the nearest body's normal decides the direction, or
+// on a crease its two faces' normals.
 double reaction_N(const Model& model, const std::vector<Eigen::Vector3d>& x, const Eigen::Vector3d& force, int node,
                   NearbyQueries& queries) {
   const auto k = static_cast<std::size_t>(node);
   const NearestSurface nearest = nearest_surface(model, queries, x[k]);
   if (nearest.body < 0) return 0.0;
+  const auto faces = model.locks[k] == 0
+                         ? model.bodies[static_cast<std::size_t>(nearest.body)].valley_normals(nearest.point.point)
+                         : std::nullopt;
+  if (faces) return pressing_force(force, model.locks[k], (*faces)[0], &(*faces)[1]);
   return pressing_force(force, model.locks[k], nearest.point.normal);
 }
 

@@ -7,6 +7,7 @@
 #include <future>
 #include <stdexcept>
 
+#include "fabform/angles.hpp"
 #include "geometry/embree_scene.hpp"
 
 namespace fabform {
@@ -272,6 +273,39 @@ std::optional<SurfacePoint> RigidBody::closest_within_placed(const Eigen::Vector
   });
   if (best < 0 || best_distance > radius) return std::nullopt;
   return surface_point_from(best, p, best_point);
+}
+
+std::optional<std::array<Eigen::Vector3d, 2>> RigidBody::valley_normals(const Eigen::Vector3d& p) const {
+  const Eigen::Vector3d q = to_placed(p);
+  const double radius = kCreaseShare * box_.diagonal();
+  std::vector<int> near;
+  const auto& V = mesh_.vertices;
+  bvh_->visit_near(q, radius, [&](int triangle) {
+    const auto& tri = mesh_.triangles[static_cast<std::size_t>(triangle)];
+    if (!face_normals_[triangle].isZero() &&
+        (q - closest_point_on_triangle(q, V[tri[0]], V[tri[1]], V[tri[2]]).point).norm() <= radius)
+      near.push_back(triangle);
+    return radius;
+  });
+  // A valley: each face rises on the outer side of the other's plane (a ridge falls away).
+  const auto centre = [&](int triangle) {
+    const auto& tri = mesh_.triangles[static_cast<std::size_t>(triangle)];
+    return Eigen::Vector3d((V[tri[0]] + V[tri[1]] + V[tri[2]]) / 3.0);
+  };
+  const auto valley = [&](int a, int b) {
+    return face_normals_[a].dot(centre(b) - q) > 0.0 && face_normals_[b].dot(centre(a) - q) > 0.0;
+  };
+  // The widest pair, in the order the triangles are numbered, so the answer does not depend on
+  // the order Embree visits them in.
+  std::sort(near.begin(), near.end());
+  double widest = std::cos(kCreaseAngleDeg * kPi / 180.0);
+  std::optional<std::array<Eigen::Vector3d, 2>> pair;
+  for (std::size_t a = 0; a < near.size(); ++a)
+    for (std::size_t b = a + 1; b < near.size(); ++b)
+      if (const double c = face_normals_[near[a]].dot(face_normals_[near[b]]); c < widest && valley(near[a], near[b]))
+        widest = c, pair = std::array<Eigen::Vector3d, 2>{pose_.linear() * face_normals_[near[a]],
+                                                          pose_.linear() * face_normals_[near[b]]};
+  return pair;
 }
 
 std::optional<SurfacePoint> RigidBody::first_entry(const Eigen::Vector3d& from,

@@ -8,23 +8,74 @@
 
 namespace fabform {
 
-Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
-                                 const Eigen::Vector3d* contact_normal, double friction) {
+namespace {
+
+// R = a n₁ + b n₂ + γ t: its parts along two unit normals that differ (valley_normals keeps them
+// kCreaseAngleDeg apart, so the 2 × 2 system is well conditioned).
+Eigen::Vector2d crease_parts(const Eigen::Vector3d& r, const Eigen::Vector3d& first, const Eigen::Vector3d& second) {
+  const double c = first.dot(second);
+  const double along_first = r.dot(first), along_second = r.dot(second);
+  return Eigen::Vector2d(along_first - c * along_second, along_second - c * along_first) / (1.0 - c * c);
+}
+
+// The one-normal rule: a node pressing on a face keeps R's part within its tangent plane.
+Eigen::Vector3d unbalanced_on_face(const Eigen::Vector3d& resultant, AxisMask locks, const Eigen::Vector3d& normal,
+                                   double friction) {
   const Eigen::Vector3d free = remove_locked(resultant, locks);
-  if (!contact_normal || free.dot(*contact_normal) >= 0.0) return free;
+  if (free.dot(normal) >= 0.0) return free;
   // Pressing on the body, the node may move only along free axes that keep it on the tangent
   // plane: remove the part along the normal's free-axis component.
-  const Eigen::Vector3d normal_free = remove_locked(*contact_normal, locks);
+  const Eigen::Vector3d normal_free = remove_locked(normal, locks);
   const double length2 = normal_free.squaredNorm();
   if (length2 == 0.0) return free;
   const Eigen::Vector3d tangential = free - (free.dot(normal_free) / length2) * normal_free;
   if (friction == 0.0) return tangential;
-  const double held = friction * pressing_force(resultant, locks, *contact_normal);
+  const double held = friction * pressing_force(resultant, locks, normal);
   const double length = tangential.norm();
   return length <= held ? Eigen::Vector3d::Zero() : Eigen::Vector3d((1.0 - held / length) * tangential);
 }
 
-double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Eigen::Vector3d& normal) {
+}  // namespace
+
+CreaseHold crease_hold(const Eigen::Vector3d& resultant, const Eigen::Vector3d& first, const Eigen::Vector3d& second) {
+  const Eigen::Vector2d parts = crease_parts(resultant, first, second);
+  if (parts[0] <= 0.0 && parts[1] <= 0.0) return CreaseHold::both;
+  if (parts[0] <= 0.0) return resultant.dot(first) < 0.0 ? CreaseHold::first : CreaseHold::none;
+  if (parts[1] <= 0.0) return resultant.dot(second) < 0.0 ? CreaseHold::second : CreaseHold::none;
+  return CreaseHold::none;
+}
+
+Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
+                                 const Eigen::Vector3d* contact_normal, double friction, const Eigen::Vector3d* crease) {
+  if (!contact_normal) return remove_locked(resultant, locks);
+  if (!crease || locks != 0) return unbalanced_on_face(resultant, locks, *contact_normal, friction);
+  switch (crease_hold(resultant, *contact_normal, *crease)) {
+    case CreaseHold::first: return unbalanced_on_face(resultant, locks, *contact_normal, friction);
+    case CreaseHold::second: return unbalanced_on_face(resultant, locks, *crease, friction);
+    case CreaseHold::none: return resultant;
+    case CreaseHold::both: break;
+  }
+  const Eigen::Vector2d parts = crease_parts(resultant, *contact_normal, *crease);
+  const Eigen::Vector3d reaction = parts[0] * *contact_normal + parts[1] * *crease;
+  const Eigen::Vector3d along = resultant - reaction;
+  const double held = friction * reaction.norm();
+  const double length = along.norm();
+  return length <= held ? Eigen::Vector3d::Zero() : Eigen::Vector3d((1.0 - held / length) * along);
+}
+
+double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Eigen::Vector3d& normal,
+                      const Eigen::Vector3d* crease) {
+  if (crease && locks == 0) {
+    switch (crease_hold(resultant, normal, *crease)) {
+      case CreaseHold::both: {
+        const Eigen::Vector2d parts = crease_parts(resultant, normal, *crease);
+        return (parts[0] * normal + parts[1] * *crease).norm();
+      }
+      case CreaseHold::second: return pressing_force(resultant, locks, *crease);
+      case CreaseHold::first:
+      case CreaseHold::none: break;
+    }
+  }
   if (locks == 0) return std::max(-resultant.dot(normal), 0.0);
   const Eigen::Vector3d normal_free = remove_locked(normal, locks);
   const double length2 = normal_free.squaredNorm();
@@ -48,11 +99,11 @@ enum class Grip { none, sliding, stuck };
 // A node pressed on a body slides when its tangential force reaches μ·λ to within e (on a
 // frictionless body, always), and is stuck when friction holds it further inside the cone; a
 // node that touches a body without pressing on it is neither.
-Grip grip(const Eigen::Vector3d& r, AxisMask locks, const Eigen::Vector3d& normal, double friction,
-          double tolerance_N) {
-  const double pressing = pressing_force(r, locks, normal);
+Grip grip(const Eigen::Vector3d& r, AxisMask locks, const Eigen::Vector3d& normal, const Eigen::Vector3d* crease,
+          double friction, double tolerance_N) {
+  const double pressing = pressing_force(r, locks, normal, crease);
   if (pressing == 0.0) return Grip::none;
-  const bool inside = unbalanced_force(r, locks, &normal).norm() < friction * pressing - tolerance_N;
+  const bool inside = unbalanced_force(r, locks, &normal, 0.0, crease).norm() < friction * pressing - tolerance_N;
   return inside ? Grip::stuck : Grip::sliding;
 }
 
@@ -88,9 +139,17 @@ NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, 
   }
   c.touching = nearest.body >= 0 && nearest.point.distance <= contact_tolerance_m;
   if (nearest.body >= 0) c.penetration_m = -nearest.point.signed_distance;
-  const double friction = c.touching ? model.bodies[static_cast<std::size_t>(nearest.body)].friction() : 0.0;
-  c.residual_N = unbalanced_force(r, model.locks[k], c.touching ? &nearest.point.normal : nullptr, friction).norm();
-  if (c.touching) c.grip = grip(r, model.locks[k], nearest.point.normal, friction, tolerance_N);
+  if (!c.touching) {
+    c.residual_N = remove_locked(r, model.locks[k]).norm();
+    return c;
+  }
+  const RigidBody& body = model.bodies[static_cast<std::size_t>(nearest.body)];
+  // On a crease, both its faces hold the node (as NodeContact::crease has it in the solvers).
+  const auto faces = model.locks[k] == 0 ? body.valley_normals(nearest.point.point) : std::nullopt;
+  const Eigen::Vector3d& normal = faces ? (*faces)[0] : nearest.point.normal;
+  const Eigen::Vector3d* crease = faces ? &(*faces)[1] : nullptr;
+  c.residual_N = unbalanced_force(r, model.locks[k], &normal, body.friction(), crease).norm();
+  c.grip = grip(r, model.locks[k], normal, crease, body.friction(), tolerance_N);
   return c;
 }
 

@@ -13,7 +13,7 @@ namespace {
 
 constexpr char kFamily[] = "fabform checkpoint ";
 // 2: each node's friction anchor; 3: each record's load step.
-constexpr char kMagic[] = "fabform checkpoint 3\n";
+constexpr char kMagic[] = "fabform checkpoint 4\n";
 constexpr std::uint32_t kByteOrder = 0x01020304;
 
 // FNV-1a: enough to tell a damaged or truncated file from a whole one.
@@ -56,8 +56,8 @@ class Reader {
       return;
     }
     if (bytes_.compare(0, sizeof kFamily - 1, kFamily) != 0) fail("not a fabform checkpoint");
-    fail("written in another checkpoint format (" + bytes_.substr(0, bytes_.find('\n')) +
-         "; this fabform reads format 3): rerun from the scene");
+    fail("written in another checkpoint format (" + bytes_.substr(0, bytes_.find('\n')) + "; this fabform reads " +
+         std::string(kMagic, sizeof kMagic - 2) + "): rerun from the scene");
   }
 
   void expect_checksum() {
@@ -104,7 +104,7 @@ class Reader {
   std::size_t end_ = 0;
 };
 
-constexpr std::size_t kNodeBytes = 9 * sizeof(double) + sizeof(std::int32_t);
+constexpr std::size_t kNodeBytes = 12 * sizeof(double) + sizeof(std::int32_t);
 constexpr std::size_t kVelocityBytes = 3 * sizeof(double);
 constexpr std::size_t kRecordBytes = 3 * sizeof(std::int64_t) + 2 * sizeof(double);
 
@@ -115,6 +115,7 @@ void put_state(Writer& out, const SolverState& s) {
     out.put(static_cast<std::int32_t>(s.contact[i].body));
     out.put_vector3(s.contact[i].normal);
     out.put_vector3(s.contact[i].anchor);
+    out.put_vector3(s.contact[i].crease);
   }
   out.put(static_cast<std::uint64_t>(s.velocity.size()));
   for (const Eigen::Vector3d& v : s.velocity) out.put_vector3(v);
@@ -152,6 +153,7 @@ SolverState get_state(Reader& in, int node_count, int body_count) {
     s.contact[i].body = in.get<std::int32_t>();
     s.contact[i].normal = in.get_vector3();
     s.contact[i].anchor = in.get_vector3();
+    s.contact[i].crease = in.get_vector3();
     if (s.contact[i].body < -1 || s.contact[i].body >= body_count)
       in.fail("node " + std::to_string(i) + " rests on body " + std::to_string(s.contact[i].body) +
               "; the scene has " + std::to_string(body_count));

@@ -8,19 +8,24 @@
 namespace fabform {
 namespace {
 
-// Gram–Schmidt over the free axes with the free part of the normal removed first. The kept
+// Gram–Schmidt over the free axes with the free part of the normal removed first (and on a
+// crease its second face's normal, so that only the crease's direction stays). The kept
 // directions span the free axes' plane within the tangent plane; a projected axis shorter than
 // 1e-3 is (to rounding) a combination of those already kept and is dropped.
 int node_basis(AxisMask locks, const NodeContact& contact, Eigen::Matrix3d* basis) {
   Eigen::Vector3d normal = contact.active() ? remove_locked(contact.normal, locks)
                                             : Eigen::Vector3d::Zero();
   if (normal.squaredNorm() > 0.0) normal.normalize();
+  Eigen::Vector3d second = contact.active() && locks == 0 ? contact.crease : Eigen::Vector3d::Zero();
+  second -= second.dot(normal) * normal;
+  if (second.squaredNorm() > 0.0) second.normalize();
   basis->setZero();
   int count = 0;
   for (int axis = 0; axis < 3; ++axis) {
     if (locks & (1 << axis)) continue;
     Eigen::Vector3d v = Eigen::Vector3d::Unit(axis);
     v -= v.dot(normal) * normal;
+    v -= v.dot(second) * second;
     for (int c = 0; c < count; ++c) v -= v.dot(basis->col(c)) * basis->col(c);
     if (v.norm() > 1e-3) basis->col(count++) = v.normalized();
   }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "fabform/model/equilibrium.hpp"
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/solver_loop.hpp"
@@ -78,13 +79,22 @@ struct StepAccuracy {
 };
 
 // Seed 003 §3.2.2: a node on a body whose force (on its free axes) points out of it leaves it.
+// On a crease it leaves the face it pulls off and rests on the other, or leaves both.
 void release_pulling_nodes(const Model& model, const std::vector<Eigen::Vector3d>& forces,
                            SolverState& state) {
 #pragma omp parallel for schedule(static) if (forces.size() >= static_cast<std::size_t>(kMinParallelItems))
   for (std::size_t k = 0; k < forces.size(); ++k) {
     NodeContact& contact = state.contact[k];
-    if (contact.active() && remove_locked(forces[k], model.locks[k]).dot(contact.normal) > 0.0)
-      contact = NodeContact{};
+    if (!contact.active()) continue;
+    if (const Eigen::Vector3d* crease = contact.crease_normal(); crease && model.locks[k] == 0) {
+      switch (crease_hold(forces[k], contact.normal, *crease)) {
+        case CreaseHold::both: continue;
+        case CreaseHold::first: contact.crease.setZero(); continue;
+        case CreaseHold::second: contact.normal = *crease, contact.crease.setZero(); continue;
+        case CreaseHold::none: contact = NodeContact{}; continue;
+      }
+    }
+    if (remove_locked(forces[k], model.locks[k]).dot(contact.normal) > 0.0) contact = NodeContact{};
   }
 }
 
@@ -232,7 +242,7 @@ class NewtonStep {
 #pragma omp parallel for schedule(dynamic, 256) if (model_.node_count() >= kMinParallelItems)
     for (int k = 0; k < model_.node_count(); ++k) {
       const auto i = static_cast<std::size_t>(k);
-      const NodeMove m = move_node(model_, k, state_.x[i], alpha * steps[i], state_.contact[i]);
+      const NodeMove m = move_node(model_, k, state_.x[i], alpha * steps[i], state_.contact[i], Valleys::both_faces);
       trial.x[i] = m.x;
       trial.contact[i] = m.contact;
     }

@@ -23,7 +23,8 @@ double node_residual(const Model& model, const SolverState& state, int node,
                      const Eigen::Vector3d& at, const NodeContact& contact) {
   const Eigen::Vector3d r = node_force_at(model, state.x, node, at);
   return unbalanced_force(r, model.locks[static_cast<std::size_t>(node)],
-                          contact.active() ? &contact.normal : nullptr, contact_friction(model, contact))
+                          contact.active() ? &contact.normal : nullptr, contact_friction(model, contact),
+                          contact.crease_normal())
       .norm();
 }
 
@@ -58,7 +59,7 @@ StateResidual measure_state(const Model& model, const SolverState& state,
   for (std::size_t i = 0; i < residual.size(); ++i) {
     const NodeContact& contact = state.contact[i];
     residual[i] = unbalanced_force(forces[i], model.locks[i], contact.active() ? &contact.normal : nullptr,
-                                   contact_friction(model, contact))
+                                   contact_friction(model, contact), contact.crease_normal())
                       .norm();
   }
   return worst_of(state, residual);

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 #include "fabform/model/model.hpp"
 #include "support/shapes.hpp"
 
@@ -49,6 +52,90 @@ TEST(UnbalancedForce, FrictionPressesOnlyWithTheFreePartOfR) {
 TEST(UnbalancedForce, ContactPullingOutKeepsAllOfR) {
   const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
   EXPECT_EQ(unbalanced_force({0.5, 0.25, 4.0}, 0, &n), Eigen::Vector3d(0.5, 0.25, 4.0));
+}
+
+// A valley 120° wide along y: faces tilted 30° either way, normals n₁ = (−½, 0, √3/2) and
+// n₂ = (½, 0, √3/2), the crease along t = y.
+struct Valley {
+  Eigen::Vector3d first{-0.5, 0.0, std::sqrt(3.0) / 2.0};
+  Eigen::Vector3d second{0.5, 0.0, std::sqrt(3.0) / 2.0};
+};
+
+TEST(UnbalancedForceOnACrease, PressedIntoBothFacesOnlyThePartAlongTheCreaseIsLeft) {
+  const Valley v;
+  const Eigen::Vector3d r(0.1, 0.3, -1.0);  // down and a little towards the second face
+  EXPECT_EQ(crease_hold(r, v.first, v.second), CreaseHold::both);
+  EXPECT_NEAR((unbalanced_force(r, 0, &v.first, 0.0, &v.second) - Eigen::Vector3d(0.0, 0.3, 0.0)).norm(), 0.0, 1e-15);
+  // The reaction is R less its part along y: |(0.1, 0, −1)|.
+  EXPECT_NEAR(pressing_force(r, 0, v.first, &v.second), std::hypot(0.1, 1.0), 1e-15);
+  // One face alone would leave its tangent-plane part, which pushes into the other face.
+  EXPECT_GT(unbalanced_force(r, 0, &v.first).norm(), 0.3 + 0.1);
+}
+
+TEST(UnbalancedForceOnACrease, FrictionHoldsWithTheWholeReaction) {
+  const Valley v;
+  const double reaction = std::hypot(0.1, 1.0);
+  EXPECT_EQ(unbalanced_force({0.1, 0.3, -1.0}, 0, &v.first, 0.4, &v.second), Eigen::Vector3d::Zero());
+  const Eigen::Vector3d slipping = unbalanced_force({0.1, 0.8, -1.0}, 0, &v.first, 0.4, &v.second);
+  EXPECT_NEAR(slipping.y(), 0.8 - 0.4 * reaction, 1e-15);
+  EXPECT_NEAR(std::hypot(slipping.x(), slipping.z()), 0.0, 1e-15);
+}
+
+TEST(UnbalancedForceOnACrease, PullingOffOneFaceRestsOnTheOther) {
+  const Valley v;
+  const Eigen::Vector3d t = Eigen::Vector3d::UnitY();
+  // R = −n₁ + ½ n₂ + 0.2 t pulls off the second face and presses on the first (R·n₁ = −¾).
+  const Eigen::Vector3d off_second = -v.first + 0.5 * v.second + 0.2 * t;
+  EXPECT_EQ(crease_hold(off_second, v.first, v.second), CreaseHold::first);
+  EXPECT_EQ(unbalanced_force(off_second, 0, &v.first, 0.0, &v.second), unbalanced_force(off_second, 0, &v.first));
+  const Eigen::Vector3d off_first = 0.5 * v.first - v.second;
+  EXPECT_EQ(crease_hold(off_first, v.first, v.second), CreaseHold::second);
+  EXPECT_EQ(unbalanced_force(off_first, 0, &v.first, 0.0, &v.second), unbalanced_force(off_first, 0, &v.second));
+  EXPECT_EQ(pressing_force(off_first, 0, v.first, &v.second), pressing_force(off_first, 0, v.second));
+  // Pulled off both, it is free.
+  const Eigen::Vector3d up(0.0, 0.3, 1.0);
+  EXPECT_EQ(crease_hold(up, v.first, v.second), CreaseHold::none);
+  EXPECT_EQ(unbalanced_force(up, 0, &v.first, 0.0, &v.second), up);
+}
+
+TEST(UnbalancedForceOnACrease, ANodeHeldOnAnAxisIgnoresTheCrease) {
+  const Valley v;
+  const Eigen::Vector3d r(0.1, 0.3, -1.0);
+  EXPECT_EQ(unbalanced_force(r, kLockX, &v.first, 0.0, &v.second), unbalanced_force(r, kLockX, &v.first));
+  EXPECT_EQ(pressing_force(r, kLockX, v.first, &v.second), pressing_force(r, kLockX, v.first));
+}
+
+// Whatever R, held by both faces what is left lies along the crease and what the body takes is
+// a push out of it along both normals; the rest rests on one face by the one-face rule.
+TEST(UnbalancedForceOnACrease, RandomForcesSplitIntoTheCreaseAndACone) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> normal;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Eigen::Vector3d first = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    Eigen::Vector3d second = Eigen::Vector3d(normal(rng), normal(rng), normal(rng)).normalized();
+    if (first.dot(second) > 0.99) continue;
+    const Eigen::Vector3d r(normal(rng), normal(rng), normal(rng));
+    const Eigen::Vector3d left = unbalanced_force(r, 0, &first, 0.0, &second);
+    switch (crease_hold(r, first, second)) {
+      case CreaseHold::both: {
+        EXPECT_NEAR(left.dot(first), 0.0, 1e-12);
+        EXPECT_NEAR(left.dot(second), 0.0, 1e-12);
+        const Eigen::Vector3d taken = r - left;  // = a n₁ + b n₂, a, b ≤ 0
+        const Eigen::Vector3d across = first.cross(second);
+        EXPECT_NEAR(taken.dot(across), 0.0, 1e-12);
+        const double c = first.dot(second);
+        const double a = (taken.dot(first) - c * taken.dot(second)) / (1.0 - c * c);
+        const double b = (taken.dot(second) - c * taken.dot(first)) / (1.0 - c * c);
+        EXPECT_LE(a, 1e-12);
+        EXPECT_LE(b, 1e-12);
+        EXPECT_LE(left.norm(), r.norm() + 1e-12);
+        break;
+      }
+      case CreaseHold::first: EXPECT_EQ(left, unbalanced_force(r, 0, &first)); break;
+      case CreaseHold::second: EXPECT_EQ(left, unbalanced_force(r, 0, &second)); break;
+      case CreaseHold::none: EXPECT_EQ(left, r); break;
+    }
+  }
 }
 
 // A 3 × 3 node patch whose centre node sits at height z over a sphere whose top is at z = 0

@@ -104,12 +104,12 @@ TEST(Checkpoint, AnotherModelsCheckpointIsRefused) {
   EXPECT_NE(error_of("").find("not a fabform checkpoint"), std::string::npos);
 }
 
-// A checkpoint of the format before friction's anchors is named as such, not as foreign.
+// A checkpoint of the format before valleys (NodeContact::crease) is named as such, not as foreign.
 TEST(Checkpoint, EarlierFormatIsNamed) {
   std::string bytes = checkpoint_bytes(sample_state(false), sample_summary());
-  bytes.replace(0, std::string("fabform checkpoint 3").size(), "fabform checkpoint 2");
+  bytes.replace(0, std::string("fabform checkpoint 4").size(), "fabform checkpoint 3");
   const std::string error = error_of(bytes);
-  EXPECT_NE(error.find("another checkpoint format (fabform checkpoint 2; this fabform reads format 3)"),
+  EXPECT_NE(error.find("another checkpoint format (fabform checkpoint 3; this fabform reads fabform checkpoint 4)"),
             std::string::npos)
       << error;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // A rigid forming body (a mold, a torso, a support disc): its placed triangle mesh, an Embree
 // BVH over it, and the pseudo-normals that tell inside from outside. All answers are double.
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -30,6 +31,13 @@ struct SurfacePoint {
   int triangle = -1;
 };
 
+/// A face within this share of a body's size of a point on the surface meets it there (a
+/// hundred times kOnSurfaceShare: a node projected onto an edge lies on both its faces to a
+/// rounding error, as does one on a crack of a CAD tessellation).
+constexpr double kCreaseShare = 1e-7;
+/// Two faces whose normals turn by less than this are one plane for a node resting on them.
+constexpr double kCreaseAngleDeg = 1.0;
+
 /// Where a point lies within this share of a body's size (its box's diagonal) of the surface, it
 /// lies on it: a node resting on a facet is left a rounding error above or below it (by the
 /// interpolation of a coarser grid's rest, say), a move that starts there starts on it, and a
@@ -52,6 +60,15 @@ class RigidBody {
   SurfacePoint closest(const Eigen::Vector3d& p, int near_triangle) const;
   /// The same, when the surface lies within `radius` of p; a small radius makes it cheap.
   std::optional<SurfacePoint> closest_within(const Eigen::Vector3d& p, double radius) const;
+
+  /// Where a point on the surface lies in a valley (a concave crease: a pocket's floor meeting
+  /// its wall, two facets of a hole), the normals of the two faces there that turn most from
+  /// each other (by more than kCreaseAngleDeg) and each rise on the outer side of the other's
+  /// plane, among the faces within kCreaseShare of the body's size of p: a node pressed into
+  /// the valley rests on both. None on a face's inside, on a ridge (a convex edge, which edge
+  /// contact keeps springs out of) or where the faces turn less. Faces are found by distance,
+  /// not by shared edges, so a CAD tessellation's cracks count too.
+  std::optional<std::array<Eigen::Vector3d, 2>> valley_normals(const Eigen::Vector3d& p) const;
 
   /// Where the straight move from → to first enters the body through its outside, if it does.
   /// Crossings of the inside of a face (leaving the body) are not entries.

@@ -18,14 +18,29 @@ namespace fabform {
 /// node may still move in: free axes within the tangent plane. With Coulomb friction μ
 /// (`friction`), the body also holds up to μ·λ of R*, λ = pressing_force (below): what stays
 /// is R*'s excess over the friction cone, so a node inside the cone is balanced, stuck or not.
+///
+/// A free node resting in a valley of the body (`crease`: its second face's normal, the first
+/// being `contact_normal`; rigid_body.hpp's valley_normals) is held by both faces while R presses
+/// into both: R = a n₁ + b n₂ + γ t with a, b ≤ 0 (t along the crease), and only γ t is
+/// unbalanced, less what friction holds of it, μ·|a n₁ + b n₂|. Where R pulls off one face it
+/// rests on the other alone (the one-normal rule above), and where it pulls off both it is free.
+/// A node held on some axis ignores the crease.
 Eigen::Vector3d unbalanced_force(const Eigen::Vector3d& resultant, AxisMask locks,
-                                 const Eigen::Vector3d* contact_normal, double friction = 0.0);
+                                 const Eigen::Vector3d* contact_normal, double friction = 0.0,
+                                 const Eigen::Vector3d* crease = nullptr);
 
 /// λ, the force with which R presses a node on a body of unit normal n (0 when R pulls it off):
 /// the body's reaction along n that keeps the node's free axes on the tangent plane. Locks take
 /// the rest of R, so for a node held on some axes λ = −R_free·n_free / |n_free|² (n_free: n
-/// with the held axes removed); a node held on every axis the body cannot be pressing on.
-double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Eigen::Vector3d& normal);
+/// with the held axes removed); a node held on every axis the body cannot be pressing on. On a
+/// crease (as above) held by both faces, |a n₁ + b n₂|.
+double pressing_force(const Eigen::Vector3d& resultant, AxisMask locks, const Eigen::Vector3d& normal,
+                      const Eigen::Vector3d* crease = nullptr);
+
+/// Which faces of a crease hold a free node whose resultant is R (unbalanced_force above): both,
+/// the first (normal n₁) or the second (n₂) alone, or none (R pulls off both).
+enum class CreaseHold { both, first, second, none };
+CreaseHold crease_hold(const Eigen::Vector3d& resultant, const Eigen::Vector3d& first, const Eigen::Vector3d& second);
 
 /// The body surface nearest to p, and which body it is (-1 for a model without bodies).
 struct NearestSurface {

@@ -15,7 +15,12 @@ struct NodeContact {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   // Where the node came onto the body: friction resists the node's slip from here.
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero();
+  // A free node resting in a valley of the body (a concave crease, RigidBody::valley_normals)
+  // has `normal` and this, its two faces' normals; zero elsewhere. Both faces hold it while its
+  // force presses into both, and it moves only along the valley (equilibrium.hpp).
+  Eigen::Vector3d crease = Eigen::Vector3d::Zero();
   bool active() const { return body >= 0; }
+  const Eigen::Vector3d* crease_normal() const { return crease.isZero() ? nullptr : &crease; }
 };
 
 struct SolverState {
