@@ -10,7 +10,7 @@ step carries the final state's per-cell fields when fabric.vtk is that state), o
 state alone (fabric.vtk, bodies.vtk); per node every field the VTK files carry, the contact
 pressure also in mmHg; per cell the final state's fields; the bodies' contact pressure. Numbers
 are little-endian float32 (positions, fields) and uint32 (triangles), base64 in one script so
-that file:// needs no fetch. Each field's colour range spans every frame that has it.
+that file:// needs no fetch. Each field's colours span the same range in every frame.
 three.js is Debian's libjs-three (r111, MIT), copied from /usr/share/javascript/three with its
 licence.
 
@@ -33,17 +33,20 @@ THREE_FILES = {"three.min.js": THREE_DIR / "three.min.js",
                "three-copyright.txt": pathlib.Path("/usr/share/doc/libjs-three/copyright")}
 VIEWER = pathlib.Path(__file__).resolve().parent / "view3d" / "viewer.js"
 MMHG_PA = 133.322387415  # 1 mmHg in Pa (contact_pressure.hpp)
+# The colours span a field from its 0.5th to its 99.5th percentile over every frame: a few nodes'
+# peaks (the pressure at a punch's rim) would leave the rest of the fabric one colour.
+COLOUR_PERCENTILES = (0.5, 99.5)
 # name: (what it is, unit shown, factor from the file's SI value to that unit)
 FIELDS = {
     "strain_warp": ("warp strain", "%", 100.0),
     "strain_weft": ("weft strain", "%", 100.0),
     "shear_angle_deg": ("shear angle", "°", 1.0),
-    "thickness_ratio": ("thickness ratio h/h₀", "1 = as flat", 1.0),
-    "wrinkle_risk": ("wrinkle risk", "1 = locked or compressed both ways", 1.0),
+    "thickness_ratio": ("thickness ratio h/h₀ (1: as flat)", "", 1.0),
+    "wrinkle_risk": ("wrinkle risk (1: locked or compressed both ways)", "", 1.0),
     "contact_pressure_Pa": ("contact pressure on the fabric", "Pa", 1.0),
     "contact_pressure_mmHg": ("contact pressure on the fabric", "mmHg", 1.0),
     "draw_in_m": ("draw-in", "mm", 1000.0),
-    "contact": ("on a body", "1 = yes", 1.0),
+    "contact": ("on a body (1: yes)", "", 1.0),
     "residual_N": ("residual force", "N", 1.0),
     "body_contact_pressure_Pa": ("contact pressure on the bodies", "Pa", 1.0),
     "body_contact_pressure_mmHg": ("contact pressure on the bodies", "mmHg", 1.0),
@@ -95,7 +98,8 @@ def read_frames(run: pathlib.Path, result: dict) -> tuple:
 
 
 def field_list(frames: list) -> list:
-    """Every field of any frame, in FIELDS' order then the others, with its range over the frames."""
+    """Every field of any frame, in FIELDS' order then the others, with its range over the frames
+    and the range its colours span (COLOUR_PERCENTILES)."""
     where = {}
     for frame in frames:
         for kind in ("node", "cell", "body"):
@@ -107,9 +111,10 @@ def field_list(frames: list) -> list:
         values = [frame[where[name]][name] for frame in frames if name in frame[where[name]]]
         finite = np.concatenate([v[np.isfinite(v)] for v in values])
         what, unit, factor = FIELDS.get(name, (name, "", 1.0))
+        low, high = np.percentile(finite, COLOUR_PERCENTILES) if finite.size else (0.0, 0.0)
         listed.append({"name": name, "where": where[name], "label": what, "unit": unit, "factor": factor,
                        "min": float(finite.min()) if finite.size else 0.0,
-                       "max": float(finite.max()) if finite.size else 0.0})
+                       "max": float(finite.max()) if finite.size else 0.0, "low": float(low), "high": float(high)})
     return listed
 
 

@@ -131,18 +131,18 @@
       const f = frame(view.frame);
       const field = fields.get(view.field);
       const values = field ? f.values[field.name] : undefined;
-      const span = field && field.max > field.min ? field.max - field.min : 1;
+      const span = field && field.high > field.low ? field.high - field.low : 1;
       const fabricColour = fabricGeometry.attributes.color.array;
       for (let c = 0; c < corners; ++c) {
-        if (values && field.where === "node") colour((values[triangles[c]] - field.min) / span, fabricColour, 3 * c);
-        else if (values && field.where === "cell") colour((values[cellOf[Math.floor(c / 3)]] - field.min) / span, fabricColour, 3 * c);
+        if (values && field.where === "node") colour((values[triangles[c]] - field.low) / span, fabricColour, 3 * c);
+        else if (values && field.where === "cell") colour((values[cellOf[Math.floor(c / 3)]] - field.low) / span, fabricColour, 3 * c);
         else fabricColour.set(grey, 3 * c);
       }
       fabricGeometry.attributes.color.needsUpdate = true;
       if (bodies) {
         const bodyColour = bodies.geometry.attributes.color.array;
         for (let v = 0; v < bodyColour.length / 3; ++v) {
-          if (values && field.where === "body") colour((values[v] - field.min) / span, bodyColour, 3 * v);
+          if (values && field.where === "body") colour((values[v] - field.low) / span, bodyColour, 3 * v);
           else bodyColour.set(grey, 3 * v);
         }
         bodies.geometry.attributes.color.needsUpdate = true;
@@ -169,8 +169,12 @@
       bar.style.cssText = "display:inline-block;width:16em;height:1em;vertical-align:middle;margin:0 0.5em;" +
                           "background:linear-gradient(to right," + stops.join(",") + ")";
       const low = document.createElement("span"), high = document.createElement("span");
-      low.textContent = format(field.min * field.factor);
-      high.textContent = format(field.max * field.factor) + unit;
+      // Beyond the bar's ends the colours saturate; the ends say so where values go further.
+      low.textContent = (field.min < field.low ? "≤ " : "") + format(field.low * field.factor);
+      high.textContent = (field.max > field.high ? "≥ " : "") + format(field.high * field.factor) + unit +
+                         (field.max > field.high || field.min < field.low
+                              ? " (all: " + format(field.min * field.factor) + " to " + format(field.max * field.factor) + ")"
+                              : "");
       const what = document.createElement("strong");
       what.textContent = field.label + ": ";
       box.append(what, low, bar, high);
