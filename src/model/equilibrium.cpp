@@ -144,7 +144,7 @@ NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, 
     return c;
   }
   const RigidBody& body = model.bodies[static_cast<std::size_t>(nearest.body)];
-  // On a crease, both its faces hold the node (as NodeContact::crease has it in the solvers).
+  // In a valley both its faces hold the node, as newton holds it there (NodeContact::crease).
   const auto faces = model.locks[k] == 0 ? body.valley_normals(nearest.point.point) : std::nullopt;
   const Eigen::Vector3d& normal = faces ? (*faces)[0] : nearest.point.normal;
   const Eigen::Vector3d* crease = faces ? &(*faces)[1] : nullptr;
