@@ -52,7 +52,7 @@ import statistics
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import bench_solvers as bench  # noqa: E402
+import fabform_process as bench  # noqa: E402  (running fabform)
 
 SIZES = "101,201,401,1001"
 TOLERANCE_N = 1e-6     # the dome scene's e

@@ -51,11 +51,12 @@ import pathlib
 import shutil
 import subprocess
 import sys
-import time
 import tomllib
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
-FABFORM = pathlib.Path(os.environ.get("FABFORM_BINARY", ROOT / "build" / "fabform"))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from fabform_process import (FABFORM, MAX_ITERATIONS, ROOT, fabform_version, largest_distance, launch,  # noqa: E402
+                             last_line, read_positions, scene_path, status_of, wait_within)
+
 FAST = "newton"                       # the reference solver and the one the targets are about
 
 
@@ -71,8 +72,6 @@ DOME_HEIGHT_M = 0.04                  # DESIGN.md: both dome starts are 4 cm hig
 # "Relax run to a tight tolerance", judged at the issue's e for its targets. At a looser e both
 # solvers can stop where they started: a drape's start, a flat fabric under its weight, meets 1e-2 N.
 AGREEMENT_TOL_N = 1e-6
-MAX_ITERATIONS = 1_000_000_000        # fabform's largest cap: the budget stops a run, not the scene's cap
-RETRIES = 3                           # launching fabform while it is being relinked fails
 COLUMNS = ["case", "scene", "N", "start", "spacing_m", "nodes", "solver", "tolerance_N", "threads", "status",
            "exit_code", "iterations", "seconds", "residual_N", "peak_MiB", "max_distance_m",
            "distance_per_spacing", "distance_to_newton_m", "note"]
@@ -170,8 +169,6 @@ class Case:
         self.overrides, self.spacing_m = overrides, spacing_m
 
 
-def scene_path(name: str) -> pathlib.Path:
-    return ROOT / "scenes" / f"{name}.toml"
 
 
 def load_scene(name: str) -> dict:
@@ -233,53 +230,12 @@ def command_for(case: Case, solver: str, tolerance: float, threads: int, out: pa
     return command
 
 
-def launch(command: list, log: pathlib.Path) -> subprocess.Popen:
-    """Start fabform, retrying while the binary is being relinked (ENOENT, ETXTBSY)."""
-    for attempt in range(RETRIES):
-        try:
-            with log.open("w") as err:
-                return subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=err)
-        except OSError as error:
-            if attempt == RETRIES - 1:
-                raise
-            print(f"    cannot start fabform ({error}); retrying in 10 s", file=sys.stderr)
-            time.sleep(10)
 
 
-def wait_within(child: subprocess.Popen, budget: float) -> tuple:
-    """(exit code or None if killed at the budget, peak resident MiB, wall seconds)."""
-    started = time.monotonic()
-    try:
-        while True:
-            pid, raw, usage = os.wait4(child.pid, os.WNOHANG)
-            if pid:
-                code = os.waitstatus_to_exitcode(raw)
-                break
-            if time.monotonic() - started > budget:
-                child.kill()
-                _, raw, usage = os.wait4(child.pid, 0)
-                code = None
-                break
-            time.sleep(0.02)
-    except BaseException:  # Ctrl-C: leave no fabform behind
-        child.kill()
-        os.wait4(child.pid, 0)
-        raise
-    child.returncode = code if code is not None else -9  # reaped here, not by Popen
-    return code, usage.ru_maxrss / 1024.0, time.monotonic() - started
 
 
-def last_line(log: pathlib.Path) -> str:
-    lines = log.read_text(errors="replace").strip().splitlines() if log.exists() else []
-    return lines[-1] if lines else ""
 
 
-def status_of(code: int, result: dict) -> str:
-    if code == 0 and result.get("converged"):
-        return "converged"
-    if code == 3 or (code == 0 and result):
-        return "not converged"
-    return "failed"
 
 
 def run_once(case, solver, tolerance, threads, out, budget) -> tuple:
@@ -304,24 +260,8 @@ def run_once(case, solver, tolerance, threads, out, budget) -> tuple:
     return row, read_positions(out)
 
 
-def read_positions(out: pathlib.Path):
-    """fabric.obj's `v x y z` lines as one flat array (x0, y0, z0, x1, ...); the file is then deleted."""
-    positions = array.array("d")
-    with (out / "fabric.obj").open() as f:
-        for line in f:
-            if line.startswith("v "):
-                positions.extend(float(v) for v in line.split()[1:4])
-    for bulky in ("fabric.obj", "fabric.vtk"):
-        (out / bulky).unlink(missing_ok=True)
-    return positions
 
 
-def largest_distance(a, b) -> float:
-    """max over nodes i of |a_i - b_i|, m; NaN when the node counts differ."""
-    if len(a) != len(b):
-        return math.nan
-    return math.sqrt(max((a[i] - b[i]) ** 2 + (a[i + 1] - b[i + 1]) ** 2 + (a[i + 2] - b[i + 2]) ** 2
-                         for i in range(0, len(a), 3)))
 
 
 # --- the reference ---------------------------------------------------------------------------
@@ -647,9 +587,6 @@ def targets(rows, solvers) -> list:
             + target_harsh(rows, solvers) + target_agreement(rows))
 
 
-def fabform_version() -> str:
-    shown = subprocess.run([str(FABFORM), "--version"], capture_output=True, text=True)
-    return shown.stdout.strip() or "fabform (version unknown)"
 
 
 def summary(rows, infos, args, plot_note) -> str:
