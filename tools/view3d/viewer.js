@@ -2,7 +2,7 @@
 // turned, zoomed and panned with the mouse (three.js's OrbitControls), coloured by the field
 // chosen, a colour bar in its units, a node read by clicking it, the frames (load steps) played.
 // The address may open it on a field, frame and node: report.html#field=strain_weft&frame=3&node=120
-// (frame 1 is the first). What it shows is also in the DOM, for a browser test: #view3d's
+// (frame 1 is the first), and `&alone` shows the view without the rest of the report. What it shows is also in the DOM, for a browser test: #view3d's
 // data-state ("ready", or why there is no view), data-field, data-frame and data-first-frame-ms;
 // #view3d-pick's data-node and data-values (JSON: the node's position and fields in the files' SI units).
 (function () {
@@ -305,10 +305,11 @@
     });
     window.addEventListener("resize", resize);
 
+    const asked = new URLSearchParams(window.location.hash.slice(1));
+    if (asked.has("alone")) document.body.replaceChildren(root);  // the view without the report round it
     showFrame(view.frame);
     frameCamera();
     resize();
-    const asked = new URLSearchParams(window.location.hash.slice(1));
     if (asked.has("field") && fields.has(asked.get("field"))) {
       view.field = select.value = asked.get("field");
       paint();
