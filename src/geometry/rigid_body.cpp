@@ -398,6 +398,7 @@ void RigidBody::add_crack_edges(double cos_limit, std::vector<SharpEdge>& edges)
       const Eigen::Vector3d& n1 = face_normals_[t];
       const Eigen::Vector3d middle = 0.5 * (a + b), along = (b - a).normalized();
       int partner = -1;
+      Eigen::Vector3d side_from, side_to;  // the partner's side along this edge
       bvh_->visit_near(middle, near, [&](int other) {
         if (partner >= 0 || other == static_cast<int>(t)) return near;
         const auto& o = T[static_cast<std::size_t>(other)];
@@ -407,11 +408,23 @@ void RigidBody::add_crack_edges(double cos_limit, std::vector<SharpEdge>& edges)
           const Eigen::Vector3d side = q - p;
           const bool collinear = side.normalized().cross(along).norm() < 1e-6 &&
                                  (middle - p).cross(side).norm() <= near * side.norm();
-          if (collinear && (middle - p).dot(side) > 0.0 && (middle - q).dot(side) < 0.0) partner = other;
+          if (collinear && (middle - p).dot(side) > 0.0 && (middle - q).dot(side) < 0.0)
+            partner = other, side_from = p, side_to = q;
         }
         return near;
       });
       if (partner < 0) continue;
+      // A crack is added from one side only, lest its line carry the penalty twice: where one
+      // side's edge holds the other's (a T-junction: short edges along one long one), the short
+      // edges; where they are staggered, the side of the lower-numbered triangle.
+      const auto within = [&](const Eigen::Vector3d& x, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+        const Eigen::Vector3d span = to - from;
+        const double at = (x - from).dot(span) / span.squaredNorm();
+        return at >= -1e-9 && at <= 1.0 + 1e-9;
+      };
+      const bool short_side = within(a, side_from, side_to) && within(b, side_from, side_to);
+      const bool long_side = within(side_from, a, b) && within(side_to, a, b);
+      if (!short_side && (long_side || partner < static_cast<int>(t))) continue;
       const Eigen::Vector3d& n2 = face_normals_[static_cast<std::size_t>(partner)];
       if (n1.isZero() || n2.isZero() || n1.dot(n2) > cos_limit) continue;
       const auto& o = T[static_cast<std::size_t>(partner)];
