@@ -87,6 +87,13 @@ def finish(ax, tolerance: float, title: str) -> None:
     ax.legend()
 
 
+def write_text(path: pathlib.Path, text: str) -> None:
+    """Writes text under a temporary name, then renames it: never a half-written file."""
+    temporary = path.with_name(path.name + ".tmp")
+    temporary.write_text(text, encoding="utf-8")
+    temporary.replace(path)
+
+
 def save(fig, base: pathlib.Path) -> list:
     written = []
     for ext in ("png", "svg"):

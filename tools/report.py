@@ -19,7 +19,6 @@ temporary name first, then renamed.
 Exits 2 with one line naming the file when an input is missing or malformed.
 """
 import html
-import json
 import math
 import pathlib
 import sys
@@ -408,12 +407,6 @@ window.addEventListener("load", () => {{
 """
 
 
-def write_text(path: pathlib.Path, text: str) -> None:
-    temporary = path.with_name(path.name + ".tmp")
-    temporary.write_text(text, encoding="utf-8")
-    temporary.replace(path)
-
-
 def make_report(run: pathlib.Path) -> pathlib.Path:
     result = pc.read_result(run)
     for key in ("scene", "termination", "message", "iterations", "figures"):
@@ -457,7 +450,7 @@ def make_report(run: pathlib.Path) -> pathlib.Path:
         steps_picture(run, result["steps"])
         pictures.append(("steps.png", "load steps: strain and draw-in against the tool's travel"))
     path = run / "report.html"
-    write_text(path, page(result, pictures, view3d.write_view(run, result)))
+    pc.write_text(path, page(result, pictures, view3d.write_view(run, result)))
     return path
 
 

@@ -23,8 +23,8 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import plot_convergence as pc  # noqa: E402  (InputError)
-import report  # noqa: E402  (save_figure, write_text, report_main)
+import plot_convergence as pc  # noqa: E402  (InputError, write_text)
+import report  # noqa: E402  (save_figure, report_main)
 
 MAX_SERIES = 8  # more lines than this are one cloud of points
 
@@ -183,7 +183,7 @@ def make_report(folder: pathlib.Path) -> pathlib.Path:
         pool.starmap(plot, plots)
     pictures = [(name, f"{figure} against {key}") for _, _, figure, key, _, name in plots]
     path = folder / "study.html"
-    report.write_text(path, page(spec, rows, pictures, specimens_section(folder, spec)))
+    pc.write_text(path, page(spec, rows, pictures, specimens_section(folder, spec)))
     return path
 
 

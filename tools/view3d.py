@@ -24,7 +24,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
-import plot_convergence as pc  # noqa: E402  (InputError)
+import plot_convergence as pc  # noqa: E402  (InputError, write_text)
 import vtk_files  # noqa: E402
 
 THREE_DIR = pathlib.Path("/usr/share/javascript/three")
@@ -135,12 +135,6 @@ def view_data(run: pathlib.Path, result: dict) -> str:
     return "window.FABFORM_VIEW = " + json.dumps(view, ensure_ascii=False) + ";\n"
 
 
-def write_atomically(path: pathlib.Path, text: str) -> None:
-    temporary = path.with_name(path.name + ".tmp")
-    temporary.write_text(text, encoding="utf-8")
-    temporary.replace(path)
-
-
 def write_view(run: pathlib.Path, result: dict) -> str:
     """Writes RUN_DIR/view3d/ and returns the report's HTML for the view."""
     for name, source in THREE_FILES.items():
@@ -151,7 +145,7 @@ def write_view(run: pathlib.Path, result: dict) -> str:
     for name, source in [*THREE_FILES.items(), ("viewer.js", VIEWER)]:
         shutil.copyfile(source, folder / (name + ".tmp"))
         (folder / (name + ".tmp")).replace(folder / name)
-    write_atomically(folder / "data.js", view_data(run, result))
+    pc.write_text(folder / "data.js", view_data(run, result))
     return VIEW_HTML
 
 

@@ -28,11 +28,8 @@ double reaction_N(const Model& model, const std::vector<Eigen::Vector3d>& x, con
   const auto k = static_cast<std::size_t>(node);
   const NearestSurface nearest = nearest_surface(model, queries, x[k]);
   if (nearest.body < 0) return 0.0;
-  const auto faces = model.locks[k] == 0
-                         ? model.bodies[static_cast<std::size_t>(nearest.body)].valley_normals(nearest.point.point)
-                         : std::nullopt;
-  if (faces) return pressing_force(force, model.locks[k], (*faces)[0], &(*faces)[1]);
-  return pressing_force(force, model.locks[k], nearest.point.normal);
+  const SurfaceSupport support = surface_support(model, nearest, model.locks[k]);
+  return pressing_force(force, model.locks[k], support.normal, support.crease_normal());
 }
 
 // The force with which the springs wrapped over the bodies' edges press on them, half on each

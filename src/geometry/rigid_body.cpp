@@ -7,7 +7,6 @@
 #include <future>
 #include <stdexcept>
 
-#include "fabform/angles.hpp"
 #include "geometry/embree_scene.hpp"
 
 namespace fabform {
@@ -298,7 +297,7 @@ std::optional<std::array<Eigen::Vector3d, 2>> RigidBody::valley_normals(const Ei
   // The widest pair, in the order the triangles are numbered, so the answer does not depend on
   // the order Embree visits them in.
   std::sort(near.begin(), near.end());
-  double widest = std::cos(kCreaseAngleDeg * kPi / 180.0);
+  double widest = kCreaseAngleCos;
   std::optional<std::array<Eigen::Vector3d, 2>> pair;
   for (std::size_t a = 0; a < near.size(); ++a)
     for (std::size_t b = a + 1; b < near.size(); ++b)

@@ -92,6 +92,13 @@ NearestSurface nearest_surface(const Model& model, NearbyQueries& queries, const
   return nearest;
 }
 
+SurfaceSupport surface_support(const Model& model, const NearestSurface& nearest, AxisMask locks) {
+  const RigidBody& body = model.bodies[static_cast<std::size_t>(nearest.body)];
+  const auto faces = locks == 0 ? body.valley_normals(nearest.point.point) : std::nullopt;
+  if (!faces) return {nearest.point.normal, std::nullopt};
+  return {(*faces)[0], (*faces)[1]};
+}
+
 namespace {
 
 enum class Grip { none, sliding, stuck };
@@ -143,13 +150,11 @@ NodeCheck check_node(const Model& model, const std::vector<Eigen::Vector3d>& x, 
     c.residual_N = remove_locked(r, model.locks[k]).norm();
     return c;
   }
-  const RigidBody& body = model.bodies[static_cast<std::size_t>(nearest.body)];
+  const double friction = model.bodies[static_cast<std::size_t>(nearest.body)].friction();
   // In a valley both its faces hold the node, as newton holds it there (NodeContact::crease).
-  const auto faces = model.locks[k] == 0 ? body.valley_normals(nearest.point.point) : std::nullopt;
-  const Eigen::Vector3d& normal = faces ? (*faces)[0] : nearest.point.normal;
-  const Eigen::Vector3d* crease = faces ? &(*faces)[1] : nullptr;
-  c.residual_N = unbalanced_force(r, model.locks[k], &normal, body.friction(), crease).norm();
-  c.grip = grip(r, model.locks[k], normal, crease, body.friction(), tolerance_N);
+  const SurfaceSupport support = surface_support(model, nearest, model.locks[k]);
+  c.residual_N = unbalanced_force(r, model.locks[k], &support.normal, friction, support.crease_normal()).norm();
+  c.grip = grip(r, model.locks[k], support.normal, support.crease_normal(), friction, tolerance_N);
   return c;
 }
 

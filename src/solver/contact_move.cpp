@@ -1,10 +1,7 @@
 #include "fabform/solver/contact_move.hpp"
 
-#include <cmath>
 #include <limits>
 #include <optional>
-
-#include "fabform/angles.hpp"
 
 namespace fabform {
 namespace {
@@ -25,7 +22,7 @@ NodeContact resting(const RigidBody& body, int b, const SurfacePoint& on, const 
 std::optional<Eigen::Vector3d> on_valley(const RigidBody& body, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
                                          const Eigen::Vector3d& first, const SurfacePoint& second) {
   const double c = first.dot(second.normal);
-  if (second.signed_distance >= 0.0 || c > std::cos(kCreaseAngleDeg * kPi / 180.0)) return std::nullopt;
+  if (second.signed_distance >= 0.0 || c > kCreaseAngleCos) return std::nullopt;
   // to + α n₁ + β n₂ on both planes.
   const double r1 = -first.dot(to - from), r2 = -second.normal.dot(to - second.point);
   const double alpha = (r1 - c * r2) / (1.0 - c * c), beta = (r2 - c * r1) / (1.0 - c * c);

@@ -85,9 +85,10 @@
         {vertexColors: THREE.VertexColors, side: THREE.DoubleSide}));
     scene.add(fabric);
     let bodies = null;
-    if (bodyTriangles.length > 0 && data.frames[0].buffers.bodies) {
+    const shownFirst = frame(data.frames.length - 1);
+    if (bodyTriangles.length > 0 && shownFirst.bodies) {
       const g = new THREE.BufferGeometry();
-      const count = floats(data.frames[0].buffers.bodies).length;
+      const count = shownFirst.bodies.length;
       g.setIndex(new THREE.BufferAttribute(bodyTriangles, 1));
       g.setAttribute("position", new THREE.BufferAttribute(new Float32Array(count), 3));
       g.setAttribute("color", new THREE.BufferAttribute(new Float32Array(count), 3));

@@ -2,6 +2,7 @@
 // A rigid forming body (a mold, a torso, a support disc): its placed triangle mesh, an Embree
 // BVH over it, and the pseudo-normals that tell inside from outside. All answers are double.
 #include <array>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "fabform/angles.hpp"
 #include "fabform/geometry/closest_point.hpp"
 #include "fabform/geometry/edge_wrap.hpp"
 #include "fabform/geometry/triangle_mesh.hpp"
@@ -37,6 +39,8 @@ struct SurfacePoint {
 constexpr double kCreaseShare = 1e-7;
 /// Two faces whose normals turn by less than this are one plane for a node resting on them.
 constexpr double kCreaseAngleDeg = 1.0;
+/// Its cosine: faces whose normals' dot product exceeds it are one plane.
+inline const double kCreaseAngleCos = std::cos(kCreaseAngleDeg * kRadiansPerDegree);
 
 /// Where a point lies within this share of a body's size (its box's diagonal) of the surface, it
 /// lies on it: a node resting on a facet is left a rounding error above or below it (by the

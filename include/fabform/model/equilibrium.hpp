@@ -3,6 +3,7 @@
 // tangent to the body, for a node in contact whose R presses into the body; locked axes carry
 // no residual. measure_equilibrium recomputes it from positions alone (contact found by
 // geometry, not taken from any solver's bookkeeping), so a test can check a solver's claim.
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -49,6 +50,16 @@ struct NearestSurface {
 };
 /// `queries` serves the model's bodies, and is cheapest asked about neighbouring points in turn.
 NearestSurface nearest_surface(const Model& model, NearbyQueries& queries, const Eigen::Vector3d& p);
+
+/// The normals with which a body holds a node touching it at `nearest` (whose body is >= 0):
+/// the nearest point's normal, or in a valley, for a node held on no axis, its two faces'
+/// (unbalanced_force's contact_normal and crease).
+struct SurfaceSupport {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  std::optional<Eigen::Vector3d> crease;
+  const Eigen::Vector3d* crease_normal() const { return crease ? &*crease : nullptr; }
+};
+SurfaceSupport surface_support(const Model& model, const NearestSurface& nearest, AxisMask locks);
 
 struct EquilibriumReport {
   std::vector<double> residual_N;      // V_k per node
