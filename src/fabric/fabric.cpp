@@ -10,6 +10,7 @@ namespace {
 
 FabricLayout layout_of(const FabricSpec& spec) {
   if (spec.shape == FabricSpec::Shape::rectangle) return rectangle_layout(spec);
+  if (spec.shape == FabricSpec::Shape::panels) return panel_layout(spec);
   if (spec.mesh == FabricSpec::Mesh::arc) return arc_layout(spec);
   return spec.mesh == FabricSpec::Mesh::jittered ? jittered_layout(spec) : circle_lattice_layout(spec);
 }
@@ -90,6 +91,8 @@ void Fabric::adopt(FabricLayout layout) {
   lattice_size_ = layout.lattice_size;
   spacing_ = layout.spacing;
   faces_ = std::move(layout.faces);
+  moved_ = std::move(layout.moved);
+  panels_ = std::move(layout.panels);
   lattice_node_.assign(static_cast<std::size_t>(lattice_size_[0]) * static_cast<std::size_t>(lattice_size_[1]), -1);
   for (int k = 0; k < node_count(); ++k)
     lattice_node_[static_cast<std::size_t>(j_of(k)) * static_cast<std::size_t>(lattice_size_[0]) +
@@ -97,7 +100,8 @@ void Fabric::adopt(FabricLayout layout) {
   // A lattice's cells are spacing × spacing exactly, as seed 003 writes them; corners at
   // rounded multiples of the spacing would give areas off by ε·(size / spacing).
   for (const Face& f : faces_) {
-    face_areas_.push_back(spec_.spaced_exactly() ? spacing_[0] * spacing_[1] : face_area(f, rest_));
+    const bool exact = std::all_of(f.corner.begin(), f.corner.begin() + f.corners, [&](int c) { return on_lattice(c); });
+    face_areas_.push_back(exact ? spacing_[0] * spacing_[1] : face_area(f, rest_));
     flat_area_ += face_areas_.back();
   }
 }
@@ -112,7 +116,8 @@ void Fabric::add_edge_springs() {
     const SpringKind kind = std::abs(d.x()) >= std::abs(d.y()) ? SpringKind::warp : SpringKind::weft;
     // A lattice's springs are its spacing long exactly, as seed 003 writes them (positions
     // i·spacing differ from it by rounding).
-    const double length = spec_.spaced_exactly() ? spacing_[kind == SpringKind::warp ? 0 : 1] : d.norm();
+    const bool exact = on_lattice(side.first) && on_lattice(side.second);
+    const double length = exact ? spacing_[kind == SpringKind::warp ? 0 : 1] : d.norm();
     springs_.push_back({side.first, side.second, length, share / length, kind});
   }
   std::stable_sort(springs_.begin(), springs_.end(),

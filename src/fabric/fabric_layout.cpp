@@ -50,15 +50,34 @@ std::string circle_reason(const FabricSpec& spec) {
   return "";
 }
 
+std::string panels_reason(const FabricSpec& spec) {
+  if (spec.panels.empty()) return "a garment needs at least one panel";
+  if (spec.mesh != FabricSpec::Mesh::quadrangular) return "panels are meshed quadrangular";
+  if (spec.tube != FabricSpec::Tube::none) return "a tube is a rectangle sewn to itself, not panels";
+  for (const double h : spec.panel_spacing_m)
+    if (!(std::isfinite(h) && h > 0.0)) return "the panels' lattice spacing must be positive and finite";
+  for (const PanelSpec& panel : spec.panels)
+    if (const std::string why = panel.outline.invalid_reason(); !why.empty()) return "panel '" + panel.name + "': " + why;
+  const std::array<int, 2> extent = panel_lattice_extent(spec);
+  if (static_cast<long long>(extent[0]) * extent[1] > kMaxNodes) return "fabric has more than 50 million nodes";
+  return "";
+}
+
 }  // namespace
 
 std::string FabricSpec::invalid_reason() const {
+  if (shape == Shape::panels) return panels_reason(*this);
   if (std::string why = size_reason(*this); !why.empty()) return why;
   return shape == Shape::rectangle ? rectangle_reason(*this) : circle_reason(*this);
 }
 
 const char* to_string(FabricSpec::Shape shape) {
-  return shape == FabricSpec::Shape::rectangle ? "rectangle" : "circle";
+  switch (shape) {
+    case FabricSpec::Shape::rectangle: return "rectangle";
+    case FabricSpec::Shape::circle: return "circle";
+    case FabricSpec::Shape::panels: return "panels";
+  }
+  return "?";
 }
 
 const char* to_string(FabricSpec::Tube tube) {

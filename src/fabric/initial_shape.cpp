@@ -73,6 +73,7 @@ bool parse_initial_kind(const std::string& name, InitialShape::Kind* kind) {
   else if (name == "wrap") *kind = Kind::wrap;
   else if (name == "tube") *kind = Kind::tube;
   else if (name == "fold") *kind = Kind::fold;
+  else if (name == "pattern") *kind = Kind::pattern;
   else return false;
   return true;
 }
@@ -81,6 +82,14 @@ std::vector<Eigen::Vector3d> initial_positions(const Fabric& grid,
                                                const Eigen::Vector3d& origin,
                                                const InitialShape& shape) {
   std::vector<Eigen::Vector3d> positions(static_cast<std::size_t>(grid.node_count()));
+  if (shape.kind == InitialShape::Kind::pattern) {
+    for (std::size_t p = 0; p < grid.panels().size(); ++p) {
+      const PanelMesh& mesh = grid.panels()[p];
+      for (int k = mesh.first_node; k < mesh.first_node + mesh.node_count; ++k)
+        positions[static_cast<std::size_t>(k)] = origin + placed_point(grid.spec().panels[p], mesh.plane_point(grid.rest_position(k)));
+    }
+    return positions;
+  }
   for (int k = 0; k < grid.node_count(); ++k) {
     auto& x = positions[static_cast<std::size_t>(k)];
     if (shape.kind == InitialShape::Kind::wrap) {

@@ -46,8 +46,10 @@ std::string SpringTerm::describe(const Model& model) const {
   const Fabric& fabric = model.fabric;
   switch (role_) {
     case Role::stretch: {
-      const std::string outline = fabric.spec().shape == FabricSpec::Shape::rectangle
-                                      ? "rectangle"
+      const FabricSpec::Shape shape = fabric.spec().shape;
+      const std::string outline = shape == FabricSpec::Shape::rectangle ? "rectangle"
+                                  : shape == FabricSpec::Shape::panels
+                                      ? std::to_string(fabric.panels().size()) + " panel(s) cut along their grain"
                                       : "circle meshed " + std::string(to_string(fabric.spec().mesh));
       return "stretch: warp and weft springs of a " + outline + " of " + std::to_string(fabric.node_count()) +
              " nodes, tension-only piecewise-linear tables" + compression_said(model.warp);

@@ -21,6 +21,8 @@ Eigen::Vector2d outward(const Fabric& fabric, int node) {
 DrawIn draw_in(const Model& model, const std::vector<Eigen::Vector3d>& x) {
   DrawIn d;
   d.per_node_m.assign(x.size(), std::numeric_limits<double>::quiet_NaN());
+  // A garment's panels are not a blank drawn in: they start apart, placed round a body.
+  if (model.fabric.spec().shape == FabricSpec::Shape::panels) return d;
   for (int k = 0; k < model.node_count(); ++k) {
     if (!model.fabric.on_perimeter(k)) continue;
     const auto i = static_cast<std::size_t>(k);

@@ -165,6 +165,8 @@ std::string fabric_name(const Fabric& fabric) {
     return "tube of " + std::to_string(fabric.nodes_warp()) + " x " + std::to_string(fabric.nodes_weft()) + " grid";
   if (fabric.spec().shape == FabricSpec::Shape::rectangle)
     return std::to_string(fabric.nodes_warp()) + " x " + std::to_string(fabric.nodes_weft()) + " grid";
+  if (fabric.spec().shape == FabricSpec::Shape::panels)
+    return std::to_string(fabric.panels().size()) + " panel(s) of " + std::to_string(fabric.node_count()) + " nodes";
   return std::string(to_string(fabric.spec().mesh)) + " circle of " + std::to_string(fabric.node_count()) +
          " nodes (a circle has no edges or corners)";
 }
@@ -445,18 +447,37 @@ void add_wind(const Scene& scene, Model* model) {
 }
 
 // A tube's seam: its two edges across the round direction, node for node.
-void add_tube_seam(const Scene& scene, Model* model) {
+std::optional<Seam> tube_seam(const Scene& scene, const Fabric& fabric) {
   const FabricSpec::Tube tube = scene.fabric.tube;
-  if (tube == FabricSpec::Tube::none) return;
+  if (tube == FabricSpec::Tube::none) return std::nullopt;
   const bool round_warp = tube == FabricSpec::Tube::warp_round;
   NodeSetSpec first, second;
   first.kind = round_warp ? NodeSetSpec::Kind::edge_left : NodeSetSpec::Kind::edge_bottom;
   second.kind = round_warp ? NodeSetSpec::Kind::edge_right : NodeSetSpec::Kind::edge_top;
-  Seam seam{"tube", stitches_by_arc_length(model->fabric, select_nodes(model->fabric, first),
-                                           select_nodes(model->fabric, second)),
-            round_warp ? scene.fabric.height_m : scene.fabric.width_m};
-  model->terms.push_back(std::make_shared<SeamTerm>(std::vector<Seam>{std::move(seam)}, seam_stiffness_N_m2(*model),
-                                                    model->node_count()));
+  return Seam{"tube", stitches_by_arc_length(fabric, select_nodes(fabric, first), select_nodes(fabric, second)),
+              round_warp ? scene.fabric.height_m : scene.fabric.width_m};
+}
+
+// A garment's seam: two panel edges, the second from its end unless sewn the same way.
+Seam panel_seam(const SeamSpec& spec, const Fabric& fabric) {
+  const auto chain = [&](int side) {
+    return fabric.panels()[static_cast<std::size_t>(spec.panel[static_cast<std::size_t>(side)])]
+        .edge_nodes[static_cast<std::size_t>(spec.edge[static_cast<std::size_t>(side)])];
+  };
+  std::vector<int> first = chain(0), second = chain(1);
+  if (!spec.same_direction) std::reverse(second.begin(), second.end());
+  double length = 0.0;
+  for (std::size_t k = 1; k < first.size(); ++k) length += (fabric.rest_position(first[k]) - fabric.rest_position(first[k - 1])).norm();
+  return Seam{spec.name, stitches_by_arc_length(fabric, first, second), length};
+}
+
+// Seed 003's F_seams: a tube's seam or a garment's, one term for them all.
+void add_seams(const Scene& scene, Model* model) {
+  std::vector<Seam> seams;
+  if (std::optional<Seam> tube = tube_seam(scene, model->fabric)) seams.push_back(std::move(*tube));
+  for (const SeamSpec& spec : scene.seams) seams.push_back(panel_seam(spec, model->fabric));
+  if (seams.empty()) return;
+  model->terms.push_back(std::make_shared<SeamTerm>(std::move(seams), seam_stiffness_N_m2(*model), model->node_count()));
 }
 
 // Fabric–fabric contact, after the seams: nodes sewn together are one point to it.
@@ -525,7 +546,7 @@ Model build_model(const Scene& scene, const Model* placed_from) {
   perturb_start(scene.perturbation, model.locks, &model.start);  // after every lock is known
   add_pressure(scene, &model);
   add_edge_contact(scene, &model);
-  add_tube_seam(scene, &model);
+  add_seams(scene, &model);
   add_self_contact(scene, &model);
   check_drape_support(scene, model);
   check_clear_start(scene, model);

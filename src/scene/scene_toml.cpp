@@ -14,91 +14,16 @@
 #include "fabform/model/wind.hpp"
 #include "fabform/solver/grid_continuation.hpp"
 #include "fabform/solver/solver_registry.hpp"
+#include "scene/garment_toml.hpp"
 #include "scene/scene_overrides.hpp"
+#include "scene/scene_values.hpp"
 #include "scene/toml_table_reader.hpp"
 
 namespace fabform {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string resolve(const std::string& scene_path, const std::string& path) {
-  if (path.empty() || fs::path(path).is_absolute()) return path;
-  return (fs::path(scene_path).parent_path() / path).lexically_normal().string();
-}
-
-int checked_int(TableReader& r, const std::string& key, long long value, long long lo, long long hi) {
-  if (value < lo || value > hi)
-    r.fail(key, "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
-  return static_cast<int>(value);
-}
-
-// The model builder refuses a start or a placed mesh reaching beyond 1e6 m (a unit mistake;
-// Embree works in single precision), naming the body or the initial shape; a huge fabric size
-// would be blamed on the initial shape, so the size is bounded here, where its key is known.
-constexpr double kMaxLength_m = 1e6;
-// An angle is written within one turn; far beyond it (1e300) the remainder is rounding noise,
-// and nothing downstream notices.
-constexpr double kMaxAngle_deg = 360.0;
-
-// %g, with the exponent as a scene writes it: 1e6, not 1e+06.
-std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  std::string out = text;
-  for (const char* padding : {"e+0", "e+", "e-0"}) {
-    const std::size_t at = out.find(padding);
-    if (at != std::string::npos) out.replace(at, std::string(padding).size(), padding[1] == '-' ? "e-" : "e");
-  }
-  return out;
-}
-
-bool has_control_character(const std::string& value) { return shown(value) != value; }
-
-void check_magnitude(TableReader& r, const std::string& key, double magnitude, double limit,
-                     const char* unit) {
-  if (magnitude > limit)
-    r.fail(key, "must be between -" + number_text(limit) + " and " + number_text(limit) + " " + unit);
-}
-
-double angle(TableReader& r, const std::string& key, double fallback, bool required = false) {
-  const double value = r.number(key, fallback, required);
-  check_magnitude(r, key, std::abs(value), kMaxAngle_deg, "degrees");
-  return value;
-}
-
-template <int N>
-Eigen::Matrix<double, N, 1> angles(TableReader& r, const std::string& key) {
-  const Eigen::Matrix<double, N, 1> value = r.vector<N>(key, Eigen::Matrix<double, N, 1>::Zero());
-  check_magnitude(r, key, value.cwiseAbs().maxCoeff(), kMaxAngle_deg, "degrees");
-  return value;
-}
-
-// A name or path that is empty or holds a control character is never what was meant: "" names
-// no file (or, for output.dir, the current folder), and names and paths are echoed into
-// one-line messages and file headers. Only a value written is checked; a key left out takes
-// its default.
-std::string plain_text(TableReader& r, const std::string& key, const std::string& fallback,
-                       bool required = false) {
-  std::string value = r.text(key, fallback, required);
-  if (r.has(key) && value.empty()) r.fail(key, "must not be empty");
-  if (has_control_character(value)) r.fail(key, "must not hold control characters (got '" + shown(value) + "')");
-  return value;
-}
-
-// The scene's name is its default results folder, results/NAME: one folder name, so that a run
-// cannot write beside or above results/.
-std::string read_scene_name(TableReader& r, const std::string& fallback) {
-  const std::string name = plain_text(r, "name", fallback);
-  if (name == "." || name == ".." || name.find_first_of("/\\") != std::string::npos)
-    r.fail("name", "must be a plain folder name (no / and not . or ..); output.dir takes a path");
-  return name;
-}
-
-void check_size(TableReader& r, const std::string& key, double size) {
-  if (!(size > 0.0)) r.fail(key, "must be positive");
-  if (size > kMaxLength_m) r.fail(key, "must be at most " + number_text(kMaxLength_m) + " m");
-}
+using namespace scene_values;
 
 void read_rectangle(TableReader& r, Scene* scene) {
   const Eigen::Vector2d size = r.vector<2>("size_m", Eigen::Vector2d::Zero(), true);
@@ -172,7 +97,8 @@ void read_fabric(TableReader& r, Scene* scene) {
   if (shape == "rectangle") read_rectangle(r, scene);
   else if (shape == "circle") read_circle(r, scene);
   else if (shape == "tube") read_tube(r, scene);
-  else r.fail("shape", "must be rectangle, circle or tube (got '" + shown(shape) + "')");
+  else if (shape == "panels") read_panels(r, scene);
+  else r.fail("shape", "must be rectangle, circle, tube or panels (got '" + shown(shape) + "')");
   scene->origin_m = r.vector<3>("origin_m", Eigen::Vector3d::Zero());
   scene->warp_path = resolve(scene->path, plain_text(r, "warp", "", true));
   scene->warp_where = r.locate_key("warp");
@@ -197,6 +123,9 @@ void read_fabric(TableReader& r, Scene* scene) {
   if (shape == "rectangle")
     r.reject_unknown({"shape", "size_m", "divisions", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
                      "areal_mass_g_m2", "compression"});
+  else if (shape == "panels")
+    r.reject_unknown({"shape", "spacing_m", "panel", "origin_m", "warp", "weft", "softening", "locking_angle_deg",
+                      "areal_mass_g_m2", "compression"});
   else if (shape == "tube")
     r.reject_unknown({"shape", "circumference_m", "length_m", "divisions", "warp_runs", "origin_m", "warp", "weft",
                       "softening", "locking_angle_deg", "areal_mass_g_m2", "compression"});
@@ -567,10 +496,13 @@ void read_perturbation(TableReader& r, StartPerturbation* p) {
 void read_initial(TableReader r, Scene* scene) {
   scene->initial_where = r.where();
   const bool tube = scene->fabric.tube != FabricSpec::Tube::none;
-  const std::string shape = r.text("shape", tube ? "tube" : "flat");
+  const bool panels = scene->fabric.shape == FabricSpec::Shape::panels;
+  const std::string shape = r.text("shape", tube ? "tube" : panels ? "pattern" : "flat");
   if (!parse_initial_kind(shape, &scene->initial.kind))
-    r.fail("shape", "must be one of flat, lift, bump, wrap, tube, fold (got '" + shown(shape) + "')");
+    r.fail("shape", "must be one of flat, lift, bump, wrap, tube, fold, pattern (got '" + shown(shape) + "')");
   using Kind = InitialShape::Kind;
+  if (scene->initial.kind == Kind::pattern && !panels)
+    r.fail("shape", "a pattern start places panels: the fabric must be of panels ([fabric] shape = \"panels\")");
   if (tube != (scene->initial.kind == Kind::tube))
     r.fail("shape", tube ? "a tube fabric starts as a tube round the body (shape = \"tube\"), not " + shape
                          : std::string("a tube start needs a tube fabric ([fabric] shape = \"tube\")"));
@@ -838,6 +770,9 @@ Scene read_scene(const toml::table& root, const std::string& path,
   info.reject_unknown({"name", "description"});
   TableReader fabric = r.table("fabric", true);
   read_fabric(fabric, &scene);
+  if (r.has("garment")) read_garment(r.table("garment", false), &scene);
+  read_seams(r.tables("seam"), &scene);
+  if (scene.fabric.shape == FabricSpec::Shape::panels) mesh_panels(fabric, &scene);
   const auto bodies = r.tables("body");
   for (std::size_t b = 0; b < bodies.size(); ++b) scene.bodies.push_back(read_body(bodies[b], path, b));
   check_steps_agree(scene);
@@ -873,6 +808,9 @@ Scene read_scene(const toml::table& root, const std::string& path,
   if (scene.fabric.tube != FabricSpec::Tube::none && scene.solver.name != "newton")
     solver.fail("name", "the fabric is a tube (" + said_at(scene.fabric_where) +
                             "), whose seam's stiff stitches only newton takes in its step, not " + scene.solver.name);
+  if (!scene.seams.empty() && scene.solver.name != "newton")
+    solver.fail("name", "the garment has seams (" + said_at(scene.seams.front().where) +
+                            "), whose stiff stitches only newton takes in its step, not " + scene.solver.name);
   if (scene.clamp.on && scene.solver.name != "newton")
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only newton models, not " + scene.solver.name);
@@ -885,7 +823,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
     solver.fail(continuation_key, why);
   read_output(r.table("output", false), &scene);
   r.reject_unknown({"scene", "fabric", "body", "constraint", "gravity", "shear", "bending", "wind", "pressure", "clamp", "drape",
-                    "self_contact", "initial", "solver", "output"});
+                    "self_contact", "garment", "seam", "initial", "solver", "output"});
   return scene;
 }
 

@@ -65,6 +65,8 @@ std::string continuation_refusal(const Scene& scene, std::string* key) {
       return "body '" + body.name + "' travels in load steps ([body.path]); grid continuation solves one rest, not steps";
   if (scene.fabric.mesh == FabricSpec::Mesh::arc)
     return "an arc mesh (rings on spokes) has no coarser lattice: grid continuation is not supported for it";
+  if (scene.fabric.shape == FabricSpec::Shape::panels)
+    return "panels' boundary nodes lie on their outlines, which a coarser lattice would meet elsewhere: grid continuation is not supported for them";
   for (std::size_t c = 0; c < scene.constraints.size(); ++c)
     if (scene.constraints[c].nodes.kind == NodeSetSpec::Kind::index)
       return "constraint " + std::to_string(c) + " names a node by its lattice index, which means another place on a coarser grid";

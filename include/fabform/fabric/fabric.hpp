@@ -92,6 +92,14 @@ class Fabric {
   /// Springs from one side of the fabric to the other: its largest lattice extent.
   int divisions_across() const;
 
+  /// Whether a node sits on its lattice point, a multiple of the spacing (not on an arc or a
+  /// jittered mesh, nor a panel's boundary node moved onto its outline).
+  bool on_lattice(int node) const {
+    return spec_.spaced_exactly() && (moved_.empty() || moved_[static_cast<std::size_t>(node)] == 0);
+  }
+  /// A garment's panels as meshed (FabricSpec::Shape::panels), else none.
+  const std::vector<PanelMesh>& panels() const { return panels_; }
+
   /// The lattice's spacing along x and y (rectangle and circle lattices; an arc mesh's ring spacing).
   double spacing_warp() const { return spacing_[0]; }
   double spacing_weft() const { return spacing_[1]; }
@@ -115,6 +123,8 @@ class Fabric {
   std::vector<int> lattice_node_;  // nodes_warp × nodes_weft, -1 for none
   std::array<double, 2> spacing_ = {0.0, 0.0};
   std::vector<Face> faces_;
+  std::vector<unsigned char> moved_;
+  std::vector<PanelMesh> panels_;
   std::vector<double> face_areas_;  // flat, per face
   std::vector<std::size_t> face_offset_;
   std::vector<int> face_ids_;

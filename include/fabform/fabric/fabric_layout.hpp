@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "fabform/fabric/panel_spec.hpp"
+
 namespace fabform {
 
 /// A quadrilateral or a triangle of the flat fabric, counter-clockwise seen from +z.
@@ -28,7 +30,7 @@ struct Face {
 constexpr double kMaxJitter = 0.2;
 
 struct FabricSpec {
-  enum class Shape { rectangle, circle };
+  enum class Shape { rectangle, circle, panels };
   enum class Mesh { quadrangular, triangular, arc, jittered };
   // A rectangle sewn to itself across one direction: a circular knit's seamless tube, the warp
   // running round it (its left and right edges sewn) or along it (bottom and top sewn). The
@@ -48,6 +50,10 @@ struct FabricSpec {
   bool bend_springs = false;   // a spring over every two consecutive springs in line
   bool hinges = false;         // a bending hinge across every side two faces share
   Tube tube = Tube::none;      // a rectangle only
+  // panels: a garment's panels, meshed on one lattice of this spacing (warp, weft); width_m,
+  // height_m and the divisions are then the lattice's extent (panel_lattice_extent).
+  std::vector<PanelSpec> panels = {};
+  std::array<double, 2> panel_spacing_m = {0.01, 0.01};
 
   /// Why the spec cannot make a fabric, or "".
   std::string invalid_reason() const;
@@ -67,6 +73,9 @@ struct FabricLayout {
   std::array<int, 2> lattice_size = {0, 0};    // extents of the lattice indices
   std::array<double, 2> spacing = {0.0, 0.0};  // lattice spacing along x and y (arc: ring spacing, arc length)
   std::vector<Face> faces;
+  // Nodes moved off their lattice point (onto a panel's outline); empty when none is.
+  std::vector<unsigned char> moved;
+  std::vector<PanelMesh> panels;
 };
 
 /// The lattice of a rectangle; the lattice cells inside a circle; an arc mesh. The spec must be
@@ -78,6 +87,16 @@ FabricLayout arc_layout(const FabricSpec& spec);
 /// The circle's lattice (circle_lattice_layout) with every node that is not on its outline moved
 /// by its lattice point's seeded draw, uniform in a disc of radius spec.jitter × spacing.
 FabricLayout jittered_layout(const FabricSpec& spec);
+
+/// A garment's panels on one lattice (panel_spec.hpp): each panel's outline turned so its grain
+/// runs along x, the lattice cells whose centres lie inside it, its boundary nodes moved onto the
+/// outline (each vertex's nearest node onto the vertex, the rest onto the nearest point of their
+/// edge, in order along it); the panels side by side along x, a lattice column apart. Throws
+/// std::invalid_argument naming the panel where the lattice cannot follow its outline (too
+/// coarse for a narrow part or a sharp corner).
+FabricLayout panel_layout(const FabricSpec& spec);
+/// The lattice's extent the panels take: nodes along x and along y.
+std::array<int, 2> panel_lattice_extent(const FabricSpec& spec);
 
 /// The area of a face at positions x (m²): a quadrilateral as two triangles split at corner 0.
 double face_area(const Face& face, const std::vector<Eigen::Vector3d>& x);

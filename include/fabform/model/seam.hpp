@@ -18,6 +18,9 @@
 namespace fabform {
 
 constexpr double kSeamStiffnessRatio = 1000.0;
+// A seam's longer edge may be this many times its shorter one: ease and gathers, not a seam
+// sewn to the wrong edge.
+constexpr double kMaxSeamLengthRatio = 2.0;
 
 /// One node of an edge held on a point of the other edge, (1 − t)·x[first] + t·x[second].
 struct Stitch {

@@ -2,7 +2,7 @@
 // Draw-in, the figure a forming engineer reads off a clamped blank: how far each node of the
 // fabric's edge moved inwards from where it started, in the blank's plane (x, y), along the
 // inward normal of the flat fabric's edge there (a rectangle's side, the diagonal at a corner,
-// a circle's radius). Negative where the edge was pushed outwards.
+// a circle's radius). Negative where the edge was pushed outwards. A garment's panels have none.
 #include <vector>
 
 #include <Eigen/Core>

@@ -1,6 +1,7 @@
 #pragma once
 // A scene as fabform runs it: validated, in SI units, with every path resolved against the
 // scene file's folder and every value remembering where it was written (for error messages).
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -149,6 +150,18 @@ struct SelfContactSpec {
   SourceLocation where;
 };
 
+// [[seam]]: two panel edges sewn together (seam.hpp), their points matched by arc length. A
+// pattern sews edges that run opposite ways round their panels (right side to right side), so
+// the second edge is taken from its end unless same_direction; edge lengths may differ (ease,
+// gathers) up to kMaxSeamLengthRatio.
+struct SeamSpec {
+  std::string name;
+  std::array<int, 2> panel = {0, 0};  // indices into FabricSpec::panels
+  std::array<int, 2> edge = {0, 0};   // edges of their outlines
+  bool same_direction = false;
+  SourceLocation where;
+};
+
 struct Scene {
   std::string path;
   std::string name;
@@ -178,6 +191,8 @@ struct Scene {
   ClampSpec clamp;
   DrapeSpec drape;
   SelfContactSpec self_contact;
+  std::vector<SeamSpec> seams;
+  std::string pattern_path;  // [garment] pattern: the sewing pattern the panels and seams came from, or ""
   InitialShape initial;
   SourceLocation initial_where;
   StartPerturbation perturbation;  // [initial] perturbation_m, seed: a seeded jitter of the start in z
