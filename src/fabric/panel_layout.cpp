@@ -312,12 +312,7 @@ Eigen::Vector2d PanelMesh::plane_point(const Eigen::Vector3d& flat) const {
 }
 
 Eigen::Vector3d placed_point(const PanelSpec& panel, const Eigen::Vector2d& plane_point) {
-  const Eigen::Vector3d r = panel.rotation_deg * (kPi / 180.0);
-  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) *
-                                    Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
-                                    Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX()))
-                                       .toRotationMatrix();
-  return rotation * Eigen::Vector3d(plane_point.x(), plane_point.y(), 0.0) + panel.translation_m;
+  return panel.rotation * Eigen::Vector3d(plane_point.x(), plane_point.y(), 0.0) + panel.translation_m;
 }
 
 std::array<int, 2> panel_lattice_extent(const FabricSpec& spec) {

@@ -68,21 +68,23 @@ bool crosses_itself(const std::vector<Vec2>& points) {
   return false;
 }
 
-// The number of segments a curve is traced with: enough that none is longer than max_segment
-// (judged on the control polygon, which is never shorter than the curve), at least 8.
-int segments_for(const PanelOutline& outline, int k, double max_segment) {
+// A bound on edge k's length: an arc's own, a Bézier curve's control polygon (never shorter
+// than the curve).
+double length_bound(const PanelOutline& outline, int k) {
   const Vec2& a = outline.vertices[static_cast<std::size_t>(k)];
   const Vec2& b = outline.vertices[(static_cast<std::size_t>(k) + 1) % outline.vertices.size()];
   const OutlineEdge& e = outline.edges[static_cast<std::size_t>(k)];
+  if (e.kind == OutlineEdge::Kind::arc) return std::abs(arc_frame(a, b, e).sweep) * e.radius_m;
   double length = 0.0;
-  if (e.kind == OutlineEdge::Kind::arc) {
-    length = std::abs(arc_frame(a, b, e).sweep) * e.radius_m;
-  } else {
-    Vec2 previous = a;
-    for (const Vec2& c : e.controls) length += (c - previous).norm(), previous = c;
-    length += (b - previous).norm();
-  }
-  return std::max(8, static_cast<int>(std::ceil(length / max_segment)));
+  Vec2 previous = a;
+  for (const Vec2& c : e.controls) length += (c - previous).norm(), previous = c;
+  return length + (b - previous).norm();
+}
+
+// The number of segments a curve is traced with: enough that none is longer than max_segment,
+// at least 8.
+int segments_for(const PanelOutline& outline, int k, double max_segment) {
+  return std::max(8, static_cast<int>(std::ceil(length_bound(outline, k) / max_segment)));
 }
 
 }  // namespace
@@ -107,9 +109,11 @@ std::string PanelOutline::invalid_reason() const {
     if (e.kind == OutlineEdge::Kind::arc && !(e.radius_m >= 0.5 * chord.norm() * (1.0 - 1e-9)))
       return edge + " is an arc whose radius is shorter than half the distance between its ends";
   }
-  double extent = 0.0;
+  // Traced in at most a few thousand segments, as the check is quadratic in them.
+  double extent = 0.0, length = 0.0;
   for (const Vec2& v : vertices) extent = std::max(extent, (v - vertices[0]).norm());
-  if (crosses_itself(trace_outline(*this, extent / 256.0).points)) return "the outline crosses itself";
+  for (std::size_t k = 0; k < edges.size(); ++k) length += length_bound(*this, static_cast<int>(k));
+  if (crosses_itself(trace_outline(*this, std::max(extent / 256.0, length / 4096.0)).points)) return "the outline crosses itself";
   return "";
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fabform/error.hpp"
+#include "fabform/geometry/placement.hpp"
 
 namespace fabform {
 namespace {
@@ -56,6 +58,8 @@ class Reader {
 };
 
 Json parsed(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError({path, 0, ""}, "no such sewing pattern file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, ""}, "cannot read the sewing pattern");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -129,7 +133,7 @@ PanelSpec read_panel(const Reader& r, const std::string& name, const Json& panel
   }
   if (const std::string why = p.outline.invalid_reason(); !why.empty()) r.fail(path, why);
   if (panel.contains("translation")) p.translation_m = r.vector3(panel.at("translation"), path + ".translation") / unit;
-  if (panel.contains("rotation")) p.rotation_deg = r.vector3(panel.at("rotation"), path + ".rotation");
+  if (panel.contains("rotation")) p.rotation = rotation_from_degrees(r.vector3(panel.at("rotation"), path + ".rotation"));
   return p;
 }
 

@@ -1,8 +1,10 @@
 #include "scene/garment_toml.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
+#include "fabform/geometry/placement.hpp"
 #include "fabform/io/garmentcode_pattern.hpp"
 #include "fabform/model/seam.hpp"
 #include "scene/scene_values.hpp"
@@ -31,6 +33,7 @@ std::vector<Eigen::Vector2d> read_points(TableReader& r, const std::string& key,
 void read_curve(TableReader& r, PanelOutline* outline) {
   const int edge = checked_int(r, "edge", r.integer("edge", 0, true), 0, static_cast<long long>(outline->edges.size()) - 1);
   OutlineEdge& e = outline->edges[static_cast<std::size_t>(edge)];
+  if (e.kind != OutlineEdge::Kind::straight) r.fail("edge", "edge " + std::to_string(edge) + " has a curve already");
   const int given = static_cast<int>(r.has("quadratic_m")) + static_cast<int>(r.has("cubic_m")) + static_cast<int>(r.has("arc_radius_m"));
   if (given != 1) r.fail("edge", "a curve gives one of quadratic_m, cubic_m (control points) or arc_radius_m");
   if (r.has("quadratic_m") || r.has("cubic_m")) {
@@ -45,6 +48,10 @@ void read_curve(TableReader& r, PanelOutline* outline) {
   e.kind = OutlineEdge::Kind::arc;
   e.radius_m = r.number("arc_radius_m", 0.0, true);
   check_size(r, "arc_radius_m", e.radius_m);
+  const double chord = (outline->vertices[(static_cast<std::size_t>(edge) + 1) % outline->vertices.size()] -
+                        outline->vertices[static_cast<std::size_t>(edge)]).norm();
+  if (e.radius_m < 0.5 * chord)
+    r.fail("arc_radius_m", "is shorter than half the distance between the edge's ends (" + number_text(chord) + " m)");
   const std::string turn = r.text("turn", "counter_clockwise");
   if (turn != "counter_clockwise" && turn != "clockwise")
     r.fail("turn", "must be counter_clockwise or clockwise (got '" + shown(turn) + "')");
@@ -63,9 +70,34 @@ PanelSpec read_panel(TableReader& r, std::size_t index) {
   p.grain_deg = angle(r, "grain_deg", 0.0);
   p.translation_m = r.vector<3>("translation_m", Eigen::Vector3d::Zero());
   check_magnitude(r, "translation_m", p.translation_m.cwiseAbs().maxCoeff(), kMaxLength_m, "m");
-  p.rotation_deg = angles<3>(r, "rotation_deg");
+  p.rotation = rotation_from_degrees(angles<3>(r, "rotation_deg"));
   r.reject_unknown({"name", "vertices_m", "curve", "grain_deg", "translation_m", "rotation_deg"});
   return p;
+}
+
+// A lattice of at most kMaxCellsAcross cells across a panel, as a rectangle's divisions: a
+// spacing written in the wrong unit is refused before anything is traced or allocated.
+constexpr double kMaxCellsAcross = 10000.0;
+
+void check_spacing(TableReader& r, const FabricSpec& f) {
+  for (const PanelSpec& panel : f.panels) {
+    Eigen::Vector2d low = panel.outline.vertices[0], high = low;
+    for (std::size_t k = 0; k < panel.outline.edges.size(); ++k) {
+      const OutlineEdge& e = panel.outline.edges[k];
+      for (const Eigen::Vector2d& p : e.controls) low = low.cwiseMin(p), high = high.cwiseMax(p);
+      // An arc strays from its chord by its sagitta, the long way round by up to its diameter.
+      const Eigen::Vector2d& v = panel.outline.vertices[k];
+      const double half = 0.5 * (panel.outline.vertices[(k + 1) % panel.outline.vertices.size()] - v).norm();
+      const double radius = e.radius_m;
+      const Eigen::Vector2d reach = Eigen::Vector2d::Constant(
+          e.large_arc ? 2.0 * radius : radius - std::sqrt(std::max(0.0, radius * radius - half * half)));
+      low = low.cwiseMin(v - reach), high = high.cwiseMax(v + reach);
+    }
+    const double across = (high - low).maxCoeff() / std::min(f.panel_spacing_m[0], f.panel_spacing_m[1]);
+    if (across > kMaxCellsAcross)
+      r.fail("spacing_m", "panel '" + shown(panel.name) + "' spans " + number_text((high - low).maxCoeff()) +
+                              " m: at this spacing more than " + number_text(kMaxCellsAcross) + " cells across it");
+  }
 }
 
 void check_names_differ(TableReader& r, const std::string& key, const std::vector<PanelSpec>& panels) {
@@ -129,8 +161,11 @@ void read_garment(TableReader garment, Scene* scene) {
     garment.fail("pattern", "the fabric gives its own panels ([[fabric.panel]]): give them or a pattern, not both");
   scene->pattern_path = resolve(scene->path, plain_text(garment, "pattern", "", true));
   const double grain = angle(garment, "grain_deg", 90.0);
-  garment.reject_unknown({"pattern", "grain_deg"});
+  // The pattern's world turned into the scene's: GarmentCode's is y up, fabform's gravity -z.
+  const Eigen::Matrix3d turn = rotation_from_degrees(angles<3>(garment, "rotation_deg"));
+  garment.reject_unknown({"pattern", "grain_deg", "rotation_deg"});
   SewingPattern pattern = read_garmentcode_pattern(scene->pattern_path, grain);
+  for (PanelSpec& panel : pattern.panels) panel.rotation = turn * panel.rotation, panel.translation_m = turn * panel.translation_m;
   scene->fabric.panels = std::move(pattern.panels);
   for (std::size_t k = 0; k < pattern.stitches.size(); ++k) {
     const SewingPattern::Stitch& stitch = pattern.stitches[k];
@@ -166,6 +201,7 @@ void read_seams(std::vector<TableReader> seams, Scene* scene) {
 void mesh_panels(TableReader& fabric, Scene* scene) {
   FabricSpec& f = scene->fabric;
   if (f.panels.empty()) fabric.fail("panel", "a fabric of panels needs [[fabric.panel]] tables or a [garment] pattern");
+  check_spacing(fabric, f);
   try {
     Fabric meshed(f);
   } catch (const std::invalid_argument& e) {

@@ -646,22 +646,28 @@ std::size_t skip_blanks(std::string_view line, std::size_t at) {
   return at;
 }
 
+// A header's dotted name with the element of each array it lies in: [[fabric.panel.curve]] in the
+// second panel is in "fabric.panel.1.curve", [body.path] in "body.1.path".
+std::string within_elements(const std::string& name, const std::map<std::string, int>& arrays) {
+  std::string resolved;
+  for (std::size_t from = 0; from <= name.size();) {
+    const std::size_t dot = std::min(name.find('.', from), name.size());
+    resolved += (resolved.empty() ? "" : ".") + name.substr(from, dot - from);
+    const auto element = arrays.find(resolved);
+    if (dot < name.size() && element != arrays.end()) resolved += "." + std::to_string(element->second - 1);
+    from = dot + 1;
+  }
+  return resolved;
+}
+
 // Follows [table] and [[array]] headers; `prefix` becomes "fabric", "body.1" or, for a table
-// inside an array's element ([body.path]), "body.1.path".
+// or an array inside an array's element, "body.1.path" or "fabric.panel.1.curve.0".
 void follow_header(std::string_view line, std::map<std::string, int>* arrays, std::string* prefix) {
   std::size_t at = skip_blanks(line, 0);
   if (at >= line.size() || line[at] != '[') return;
   const bool array = at + 1 < line.size() && line[at + 1] == '[';
-  const std::string name = bare_key_at(line, skip_blanks(line, at + (array ? 2 : 1)));
-  if (array) {
-    *prefix = name + "." + std::to_string((*arrays)[name]++);
-    return;
-  }
-  const std::string first = name.substr(0, name.find('.'));
-  const auto element = arrays->find(first);
-  *prefix = element == arrays->end() || first == name
-                ? name
-                : first + "." + std::to_string(element->second - 1) + name.substr(first.size());
+  const std::string name = within_elements(bare_key_at(line, skip_blanks(line, at + (array ? 2 : 1))), *arrays);
+  *prefix = array ? name + "." + std::to_string((*arrays)[name]++) : name;
 }
 
 // The dotted key of a `key = value` line, or "" for any other line.

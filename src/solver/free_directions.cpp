@@ -83,8 +83,11 @@ Eigen::VectorXd reduced_forces(const FreeDirections& directions,
 
 namespace {
 
+// A garment's panels share the lattice's indices side by side, but their seams join nodes the
+// lattice's lines and coarse grids know nothing of: they are solved as a general mesh.
 std::optional<LatticeUnknowns> lattice_unknowns(const FreeDirections& directions, const Fabric& fabric) {
-  if (fabric.spec().mesh == FabricSpec::Mesh::arc || fabric.nodes_warp() < 2 || fabric.nodes_weft() < 2)
+  if (fabric.spec().mesh == FabricSpec::Mesh::arc || fabric.spec().shape == FabricSpec::Shape::panels ||
+      fabric.nodes_warp() < 2 || fabric.nodes_weft() < 2)
     return std::nullopt;
   LatticeUnknowns l;
   l.lattice_size = {fabric.nodes_warp(), fabric.nodes_weft()};

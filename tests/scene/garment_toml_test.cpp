@@ -151,7 +151,7 @@ TEST(GarmentScene, TheShirtPatternsStitchesMeetWhereItPlacesThem) {
   for (const SeamSpec& s : scene.seams) {
     const PanelSpec& pa = scene.fabric.panels[static_cast<std::size_t>(s.panel[0])];
     const PanelSpec& pb = scene.fabric.panels[static_cast<std::size_t>(s.panel[1])];
-    if (pa.rotation_deg != pb.rotation_deg) continue;
+    if (!pa.rotation.isApprox(pb.rotation, 1e-12)) continue;
     ++alike;
     const auto& a = fabric.panels()[static_cast<std::size_t>(s.panel[0])].edge_nodes[static_cast<std::size_t>(s.edge[0])];
     const auto& b = fabric.panels()[static_cast<std::size_t>(s.panel[1])].edge_nodes[static_cast<std::size_t>(s.edge[1])];

@@ -5,7 +5,9 @@
 // gives the file, the line and the key ("sweep.toml:12: solver.C: ..."), or, where the table
 // says the value is legitimate, a scene that parses. A few values pass the parser and are
 // refused when the model is built, which knows the grid, the files and the placed geometry;
-// the table says so (verdict B) and the case builds the model to check it.
+// the table says so (verdict B) and the case builds the model to check it. A sewing pattern the
+// scene reads is another file: an error in it names that file (and the JSON path at fault), not
+// a key of the scene.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,15 +29,17 @@ namespace {
 
 // ---------------------------------------------------------------------------------------------
 // The valid scene every case starts from: every key of the format, written once, with the
-// repository's material tables and dome mold. Six variants, as some keys depend on others:
+// repository's material tables and dome mold. Eight variants, as some keys depend on others:
 // the initial shape's on the shape, lift (height_m) or wrap (axis_m, radius_m, facing_deg,
 // span_deg); the fabric's on its outline, a rectangle or a circle meshed as a lattice (circle),
 // as rings on spokes (arc) or as a jittered lattice (jittered, the circle's scene with its mesh
 // and jitter); a body's path on load steps, which the rectangles' friction in bending and shear
 // refuses (travel, lift's scene with the path and without that friction). The circles also hold
-// the drape test's force terms and [drape].
+// the drape test's force terms and [drape]. A garment's keys need a fabric of panels: lift's
+// scene as two panels sewn together, started where they are placed (panels), and the same with
+// GarmentCode's shirt for its panels and seams (pattern, [garment]).
 
-enum class Base { lift, wrap, circle, arc, jittered, travel };
+enum class Base { lift, wrap, circle, arc, jittered, travel, panels, pattern };
 
 const char* prefix_of(Base base) {
   switch (base) {
@@ -45,6 +49,8 @@ const char* prefix_of(Base base) {
     case Base::arc: return "arc_";
     case Base::jittered: return "jittered_";
     case Base::travel: return "travel_";
+    case Base::panels: return "panels_";
+    case Base::pattern: return "pattern_";
   }
   return "";
 }
@@ -138,12 +144,61 @@ SceneText travelling(SceneText lift) {
   return lift;
 }
 
+// The square's scene as a garment on a lattice of 1 cm: two 5 cm panels side by side, sewn where
+// they meet and bulging outwards on three edges, one of each kind of curve (a quadratic, an arc
+// and a cubic Bézier) (panels); or GarmentCode's shirt, whose pattern gives the panels and the
+// seams, turned y up to z up as the torso's scenes turn their body (pattern). Seams need newton;
+// a garment starts where its panels are placed (initial shape "pattern"). The constraints stay,
+// as far as the shirt's lattice allows: they select on the panels' flat layout, side by side a
+// lattice column apart.
+SceneText garment(SceneText lift, Base base) {
+  auto& sections = lift.sections;
+  const auto named = [&](const std::string& name) {
+    return std::find_if(sections.begin(), sections.end(), [&](const Section& s) { return s.name == name; });
+  };
+  std::vector<Entry>& fabric = named("fabric")->entries;
+  fabric.erase(std::remove_if(fabric.begin(), fabric.end(),
+                              [](const Entry& e) { return e.key == "shape" || e.key == "size_m" || e.key == "divisions"; }),
+               fabric.end());
+  fabric.insert(fabric.begin(), {{"shape", "\"panels\""}, {"spacing_m", "0.01"}});
+  const std::vector<Section> panels = {
+      {"fabric.panel.0", "[[fabric.panel]]",
+       {{"name", "\"left\""}, {"vertices_m", "[[0.0, 0.0], [0.05, 0.0], [0.05, 0.05], [0.0, 0.05]]"},
+        {"grain_deg", "0.0"}, {"translation_m", "[0.0, 0.0, 0.0]"}, {"rotation_deg", "[0.0, 0.0, 0.0]"}}},
+      // Its bottom edge bows 2.5 mm down, its left one (from [0, 0.05] to the origin) 6.7 mm left.
+      {"fabric.panel.0.curve.0", "[[fabric.panel.curve]]", {{"edge", "0"}, {"quadratic_m", "[[0.025, -0.005]]"}}},
+      {"fabric.panel.0.curve.1", "[[fabric.panel.curve]]",
+       {{"edge", "3"}, {"arc_radius_m", "0.05"}, {"turn", "\"counter_clockwise\""}, {"large_arc", "false"}}},
+      {"fabric.panel.1", "[[fabric.panel]]",
+       {{"name", "\"right\""}, {"vertices_m", "[[0.05, 0.0], [0.1, 0.0], [0.1, 0.05], [0.05, 0.05]]"},
+        {"grain_deg", "0.0"}, {"translation_m", "[0.0, 0.0, 0.0]"}, {"rotation_deg", "[0.0, 0.0, 0.0]"}}},
+      // Its top edge (from [0.1, 0.05] to [0.05, 0.05]) bows 3.75 mm up.
+      {"fabric.panel.1.curve.0", "[[fabric.panel.curve]]", {{"edge", "2"}, {"cubic_m", "[[0.085, 0.055], [0.065, 0.055]]"}}},
+      {"seam.0", "[[seam]]", {{"name", "\"middle\""}, {"a", "[\"left\", 1]"}, {"b", "[\"right\", 3]"}, {"direction", "\"opposite\""}}}};
+  const std::vector<Section> pattern = {
+      {"garment", "[garment]",
+       {{"pattern", "\"../garments/garmentcode_shirt_mean_specification.json\""}, {"grain_deg", "90.0"},
+        {"rotation_deg", "[90.0, 0.0, 0.0]"}}}};
+  const std::vector<Section>& added = base == Base::pattern ? pattern : panels;
+  sections.insert(named("fabric") + 1, added.begin(), added.end());
+  // The shirt's lattice (its panels' own, side by side, each from its lower-left corner) has no
+  // node [2, 2], nor any in the square's box of 3 cm: its box is of 30 cm.
+  if (base == Base::pattern) {
+    sections.erase(named("constraint.1"));
+    named("constraint.3")->entries.front().value = "[[0.0, 0.0], [0.3, 0.3]]";
+  }
+  named("initial")->entries = {{"shape", "\"pattern\""}, {"perturbation_m", "1e-4"}, {"seed", "7"}};
+  named("solver")->entries.front().value = "\"newton\"";
+  return lift;
+}
+
 // A 10 cm knit (a square of 4 x 4 divisions or a circle), 5 cm above a 3 cm dome, held by one
 // constraint of each selector kind. The scene's own path is scenes/sweep.toml, so paths are
 // relative to scenes/.
 SceneText base_scene(Base base) {
   if (base == Base::jittered) return jittered(base_scene(Base::circle));
   if (base == Base::travel) return travelling(base_scene(Base::lift));
+  if (base == Base::panels || base == Base::pattern) return garment(base_scene(Base::lift), base);
   SceneText scene{{},
           {{"scene", "[scene]", {{"name", "\"sweep\""}, {"description", "\"every key of the scene format\""}}},
            fabric_section(base),
@@ -207,6 +262,13 @@ struct Rendered {
   std::map<std::string, int> line_of;
 };
 
+// A section's name without its index in an array: "fabric.panel.0" -> "fabric.panel".
+std::string array_of(const std::string& section) {
+  const auto dot = section.rfind('.');
+  if (dot == std::string::npos || section.find_first_not_of("0123456789", dot + 1) != std::string::npos) return section;
+  return section.substr(0, dot);
+}
+
 Rendered render(const SceneText& scene) {
   Rendered r;
   int line = 1;
@@ -219,6 +281,7 @@ Rendered render(const SceneText& scene) {
   for (const auto& e : scene.root) put(e.key, e.key + " = " + e.value);
   for (const auto& s : scene.sections) {
     put(s.name.substr(0, s.name.find('.')), s.header);  // "body": its first element's header
+    r.line_of.emplace(array_of(s.name), line - 1);       // "fabric.panel", "fabric.panel.0.curve" too
     r.line_of.emplace(s.name, line - 1);
     for (const auto& e : s.entries) put(s.name + "." + e.key, e.key + " = " + e.value);
   }
@@ -237,6 +300,8 @@ enum class Type {
   vec3,         // [x, y, z]
   int_pair,     // [i, j], integers
   box,          // [[x0, y0], [x1, y1]]
+  points,       // [[x, y], ...]: an outline's vertices, a curve's control points
+  side,         // ["panel", edge]: a seam's side
   table,        // a [section]
   table_array,  // an [[array]] of sections
   only_extras,  // a key seen from another base scene: only its listed values
@@ -249,7 +314,9 @@ using V = Verdict;
 constexpr V _ = V::_, R = V::R, A = V::A, B = V::B;
 
 // A key-specific value: `value` nullptr removes the key; `names` is the key the message must
-// name when that is not the row's (e.g. a constraint's selector missing names the constraint).
+// name when that is not the row's (e.g. a constraint's selector missing names the constraint),
+// or "file:PATH" when the error is another file's (PATH from the repository's root), such as a
+// sewing pattern the scene reads.
 struct Extra {
   const char* label;
   const char* value;
@@ -262,8 +329,8 @@ struct KeyRow {
   Type type;
   Base base;
   // Verdicts on: the key left out; a negative, zero and huge value (1e300, or 99999999999 for
-  // an integer); an empty string. Wrong types, NaN, infinities and numbers TOML cannot hold are
-  // always refused and need no column.
+  // an integer); an empty string (for a seam's side, an empty panel name). Wrong types, NaN,
+  // infinities and numbers TOML cannot hold are always refused and need no column.
   Verdict missing, negative, zero, huge, empty;
   const char* builder_names;  // for B: the key build_model names, "" = the row's key
   std::vector<Extra> extras;
@@ -275,7 +342,7 @@ constexpr const char* kSame = "";
 const std::vector<KeyRow>& key_table() {
   using T = Type;
   const Base lift = Base::lift, wrap = Base::wrap, circle = Base::circle, arc = Base::arc, jittered = Base::jittered,
-             travel = Base::travel;
+             travel = Base::travel, panels = Base::panels, pattern = Base::pattern;
   static const std::vector<KeyRow> rows = {
       // key                             type          base  miss neg zero huge empty builder
       {"scene",                          T::table,     lift, A,   _,  _,   _,   _,    "", {}},
@@ -287,7 +354,8 @@ const std::vector<KeyRow>& key_table() {
        {{"newline", "\"two\\nlines\"", A, kSame}}},
       {"fabric",                         T::table,     lift, R,   _,  _,   _,   _,    "", {}},
       {"fabric.shape",                   T::choice,    lift, A,   _,  _,   _,   R,    "",
-       {{"upper_case", "\"Circle\"", R, kSame}, {"circle_without_its_keys", "\"circle\"", R, "fabric.diameter_m"}}},
+       {{"upper_case", "\"Circle\"", R, kSame}, {"circle_without_its_keys", "\"circle\"", R, "fabric.diameter_m"},
+        {"panels_without_their_keys", "\"panels\"", R, "fabric.spacing_m"}}},
       {"fabric.shape",                   T::only_extras, circle, _, _, _,  _,   _,    "",
        {{"rectangle_without_its_keys", "\"rectangle\"", R, "fabric.size_m"}}},
       {"fabric.diameter_m",              T::number,    circle, R, R,  R,   R,   _,    "",
@@ -332,6 +400,120 @@ const std::vector<KeyRow>& key_table() {
        {{"buckling_without_hinges", "\"buckling\"", B, kSame}}},
       {"fabric.compression",             T::only_extras, arc, _,  _,  _,   _,   _,    "",
        {{"buckling_with_hinges", "\"buckling\"", A, kSame}}},
+      // A garment: panels on a lattice of spacing_m, given as [[fabric.panel]] or by a [garment]
+      // pattern, sewn by [[seam]]. Without its shape the fabric is a rectangle, without a size.
+      {"fabric.shape",                   T::only_extras, panels, _, _, _,  _,   _,    "",
+       {{"missing", kRemove, R, "fabric.size_m"}, {"upper_case", "\"Panels\"", R, kSame},
+        {"rectangle_without_its_keys", "\"rectangle\"", R, "fabric.size_m"}}},
+      // A panel is meshed while its lattice cells form one piece: one cell of 5 cm each does, a
+      // lattice of 10 cm (or 1e300 m) does not. One of more than 50 million nodes is refused
+      // before it is meshed: at 5 µm, 2 x 1e8 nodes. At 1 pm the cells a side (5e10) overflow an
+      // int: refused here only as the mis-sized lattice of these curved panels falls apart
+      // (straight ones are meshed as one cell each). At 1 nm the outline is traced with 1.6e9
+      // points an edge until memory runs out (std::bad_alloc, not an InputError): left out, as
+      // it would take the machine's memory with it.
+      {"fabric.spacing_m",               T::number,    panels, R, R,  R,   R,   _,    "",
+       {{"warp_and_weft", "[0.01, 0.0125]", A, kSame}, {"one_direction_zero", "[0.01, 0.0]", R, kSame},
+        {"one_direction_negative", "[-0.01, 0.01]", R, kSame}, {"three_values", "[0.01, 0.01, 0.01]", R, kSame},
+        {"a_millimetre", "0.001", A, kSame}, {"a_cell_a_panel", "0.05", A, kSame},
+        {"coarser_than_the_panels", "0.1", R, kSame}, {"five_micrometres", "5e-6", R, kSame},
+        {"a_picometre", "1e-12", R, kSame}}},
+      {"fabric.spacing_m",               T::only_extras, pattern, _, _, _, _,   _,    "",
+       {{"coarser_than_the_cuffs", "0.1", R, kSame}}},
+      // Without panels the seam names one that is not there.
+      {"fabric.panel",                   T::table_array, panels, _, _, _,  _,   _,    "",
+       {{"missing", kRemove, R, "seam.0.a"}}},
+      // A seam names its panels: without its name (panel0) or with the other's, "left" is no panel.
+      {"fabric.panel.0.name",            T::text,      panels, _, _,  _,   _,   R,    "",
+       {{"missing", kRemove, R, "seam.0.a"}, {"newline", "\"le\\nft\"", R, kSame},
+        {"the_others", "\"right\"", R, "fabric.panel"}}},
+      // An outline of three vertices or more that does not cross itself; its curves name its edges.
+      {"fabric.panel.0.vertices_m",      T::points,    panels, R, _,  R,   R,   _,    "",
+       {{"two_points", "[[0.0, 0.0], [0.05, 0.0]]", R, kSame},
+        {"crossing", "[[0.0, 0.0], [0.05, 0.05], [0.05, 0.0], [0.0, 0.05]]", R, kSame},
+        {"triangle_without_the_arcs_edge", "[[0.0, 0.0], [0.05, 0.0], [0.05, 0.05]]", R, "fabric.panel.0.curve.1.edge"},
+        {"pentagon", "[[0.0, 0.0], [0.05, 0.0], [0.05, 0.05], [0.025, 0.06], [0.0, 0.05]]", A, kSame},
+        {"beyond_1e6_m", "[[0.0, 0.0], [2e6, 0.0], [0.05, 0.05]]", R, kSame}}},
+      {"fabric.panel.0.grain_deg",       T::number,    panels, A, A,  A,   R,   _,    "",
+       {{"full_turn", "360.0", A, kSame}, {"beyond_a_turn", "361.0", R, kSame}, {"bias", "45.0", A, kSame}}},
+      {"fabric.panel.0.translation_m",   T::vec3,      panels, A, A,  A,   R,   _,    "",
+       {{"beyond_1e6_m", "[2e6, 0.0, 0.0]", R, kSame}}},
+      {"fabric.panel.0.rotation_deg",    T::vec3,      panels, A, A,  A,   R,   _,    "",
+       {{"full_turns", "[360.0, -360.0, 0.0]", A, kSame}, {"beyond_a_turn", "[0.0, 361.0, 0.0]", R, kSame}}},
+      // Straight edges without.
+      {"fabric.panel.0.curve",           T::table_array, panels, A, _, _,  _,   _,    "", {}},
+      // One curve an edge: a second one on the arc's edge (3) or the quadratic's (0) is named by
+      // the curve that comes second. (The parser takes the second for the first, then blames
+      // vertices_m for the stale control point; an arc before a Bézier is silently replaced.)
+      // A value TOML cannot hold in a [[fabric.panel.curve]] (1e999, beyond 64 bits) is named
+      // like any other (the parser drops the panel's index and counts curves across panels:
+      // fabric.panel.curve.0.edge).
+      {"fabric.panel.0.curve.0.edge",    T::integer,   panels, R, R,  A,   R,   _,    "",
+       {{"beyond_the_last", "4", R, kSame}, {"the_arcs", "3", R, "fabric.panel.0.curve.1.edge"}}},
+      // Its control point given, the curve is a quadratic Bézier: one of quadratic_m, cubic_m or
+      // arc_radius_m, or the curve is no curve (named by its edge). A control point metres out is
+      // left out: the check that the outline does not cross itself takes a time quadratic in the
+      // curve's length (4 s at 3 m, 40 s at 10 m, a control point written in mm hangs it).
+      {"fabric.panel.0.curve.0.quadratic_m", T::points, panels, _, _,  _,   R,   _,    "",
+       {{"missing", kRemove, R, "fabric.panel.0.curve.0.edge"}, {"two_points", "[[0.02, -0.005], [0.03, -0.005]]", R, kSame},
+        {"on_the_chord", "[[0.025, 0.0]]", A, kSame}, {"at_a_vertex", "[[0.0, 0.0]]", A, kSame},
+        {"a_fifth_of_a_metre_out", "[[0.025, -0.2]]", A, kSame}, {"beyond_1e6_m", "[[0.025, -2e6]]", R, kSame},
+        {"across_the_panel", "[[0.025, 0.2]]", R, "fabric.panel.0.vertices_m"},
+        {"and_an_arc", "[[0.025, -0.005]]\narc_radius_m = 0.05", R, "fabric.panel.0.curve.0.edge"}}},
+      {"fabric.panel.0.curve.1.edge",    T::integer,   panels, R, R,  _,   R,   _,    "",
+       {{"beyond_the_last", "4", R, kSame}, {"the_quadratics", "0", R, kSame}, {"the_seams", "1", A, kSame}}},
+      // An arc's radius is at least half its chord (5 cm here): a semicircle at that. (The parser
+      // blames vertices_m for a shorter one.)
+      {"fabric.panel.0.curve.1.arc_radius_m", T::number, panels, _, R, R,  R,   _,    "",
+       {{"missing", kRemove, R, "fabric.panel.0.curve.1.edge"}, {"half_the_chord", "0.025", A, kSame},
+        {"shorter_than_half_the_chord", "0.02", R, kSame},
+        {"a_kilometre", "1000.0", A, kSame}, {"beyond_1e6_m", "2e6", R, kSame}}},
+      {"fabric.panel.0.curve.1.turn",    T::choice,    panels, A, _,  _,   _,   R,    "",
+       {{"clockwise", "\"clockwise\"", A, kSame}, {"upper_case", "\"Clockwise\"", R, kSame}}},
+      {"fabric.panel.0.curve.1.large_arc", T::only_extras, panels, _, _, _,  _,   _,    "",
+       {{"true", "true", A, kSame}, {"false", "false", A, kSame}, {"missing", kRemove, A, kSame},
+        {"a_number", "1", R, kSame}, {"a_string", "\"yes\"", R, kSame}}},
+      // Two control points: a cubic Bézier.
+      {"fabric.panel.1.curve.0.cubic_m", T::points,    panels, _, _,  _,   R,   _,    "",
+       {{"missing", kRemove, R, "fabric.panel.1.curve.0.edge"}, {"one_point", "[[0.075, 0.055]]", R, kSame},
+        {"three_points", "[[0.09, 0.055], [0.075, 0.055], [0.06, 0.055]]", R, kSame},
+        {"on_the_chord", "[[0.085, 0.05], [0.065, 0.05]]", A, kSame},
+        {"and_a_quadratic", "[[0.085, 0.055], [0.065, 0.055]]\nquadratic_m = [[0.075, 0.055]]", R,
+         "fabric.panel.1.curve.0.edge"}}},
+      // Seams need panels, and newton.
+      {"seam",                           T::table_array, panels, A, _,  _,   _,   _,    "", {}},
+      {"seam.0.name",                    T::text,      panels, A, _,  _,   _,   R,    "",
+       {{"newline", "\"a\\nb\"", R, kSame}}},
+      // Any two edges of about one length: the bow of the quadratic's edge (0) is ease.
+      {"seam.0.a",                       T::side,      panels, R, R,  A,   R,   R,    "",
+       {{"no_such_panel", "[\"sleeve\", 1]", R, kSame}, {"beyond_the_last", "[\"left\", 4]", R, kSame},
+        {"the_arcs_edge", "[\"left\", 3]", A, kSame}, {"the_others", "[\"right\", 3]", R, "seam.0.b"}}},
+      {"seam.0.b",                       T::side,      panels, R, R,  A,   R,   R,    "",
+       {{"no_such_panel", "[\"sleeve\", 3]", R, kSame}, {"beyond_the_last", "[\"right\", 4]", R, kSame},
+        {"the_others", "[\"left\", 1]", R, kSame}, {"on_its_own_panel", "[\"left\", 3]", A, kSame}}},
+      {"seam.0.direction",               T::choice,    panels, A, _,  _,   _,   R,    "",
+       {{"same", "\"same\"", A, kSame}, {"upper_case", "\"Same\"", R, kSame}}},
+      {"solver.name",                    T::only_extras, panels, _, _, _,  _,   _,    "",
+       {{"relax_with_seams", "\"relax\"", R, kSame}, {"missing_with_seams", kRemove, R, kSame}}},
+      // A fabric of panels starts where they are placed (its default), or as any sheet does.
+      {"initial.shape",                  T::only_extras, panels, _, _, _,  _,   _,    "",
+       {{"missing", kRemove, A, kSame}, {"flat", "\"flat\"", A, kSame},
+        {"lift_without_height", "\"lift\"", R, "initial.height_m"}, {"tube", "\"tube\"", R, kSame}}},
+      // Without the pattern the fabric has no panels. A pattern that cannot be read names its
+      // file (and, within it, the JSON path at fault). (A folder escapes the reader as
+      // std::ios_base::failure.)
+      {"garment",                        T::table,     pattern, _, _, _,   _,   _,    "",
+       {{"missing", kRemove, R, "fabric.panel"}}},
+      {"garment.pattern",                T::text,      pattern, R, _, _,   _,   R,    "",
+       {{"newline", "\"a\\nb.json\"", R, kSame}, {"no_such_file", "\"nowhere.json\"", R, "file:scenes/nowhere.json"},
+        {"not_json", "\"../materials/white-swim-solid_warp.csv\"", R, "file:materials/white-swim-solid_warp.csv"},
+        {"a_folder", "\"../garments\"", R, "file:garments"},
+        {"the_hoody", "\"../garments/garmentcode_hoody_mean_specification.json\"", A, kSame}}},
+      // The panels' grain, from the pattern's x axis (90: along its y, a garment's length).
+      {"garment.grain_deg",              T::number,    pattern, A, A, A,   R,   _,    "",
+       {{"full_turn", "360.0", A, kSame}, {"beyond_a_turn", "361.0", R, kSame}}},
+      {"garment.rotation_deg",           T::vec3,      pattern, A, A, A,   R,   _,    "",
+       {{"beyond_a_turn", "[0.0, 361.0, 0.0]", R, kSame}}},
       {"body",                           T::table_array, lift, A, _,  _,   _,   _,    "", {}},
       {"body.0.name",                    T::text,      lift, A,   _,  _,   _,   R,    "",
        {{"newline", "\"a\\nb\"", R, kSame}}},
@@ -477,7 +659,7 @@ const std::vector<KeyRow>& key_table() {
       {"initial",                        T::table,     lift, A,   _,  _,   _,   _,    "", {}},
       {"initial.shape",                  T::choice,    lift, A,   _,  _,   _,   R,    "",
        {{"upper_case", "\"Lift\"", R, kSame}, {"flat", "\"flat\"", A, kSame}, {"bump", "\"bump\"", A, kSame},
-        {"wrap_without_its_keys", "\"wrap\"", R, "initial.axis_m"}}},
+        {"wrap_without_its_keys", "\"wrap\"", R, "initial.axis_m"}, {"pattern_of_a_rectangle", "\"pattern\"", R, kSame}}},
       {"initial.height_m",               T::number,    lift, R,   A,  R,   B,   _,    "initial", {}},
       {"initial.perturbation_m",         T::number,    lift, A,   R,  A,   R,   _,    "",
        {{"beyond_a_tenth", "0.2", R, kSame}}},
@@ -549,7 +731,7 @@ enum class Edit {
   replace,     // the key's value becomes `value`
   remove,      // the key (or the whole section) is left out
   header,      // the section's header becomes `value` ("[[fabric]]")
-  root_value,  // the section is replaced by `KEY = value` before the first header
+  root_value,  // the section is replaced by `KEY = value` before the first header (in its parent's)
   insert,      // `value` is added as a line of the section (an unknown key)
 };
 
@@ -605,6 +787,22 @@ std::vector<std::pair<std::string, std::string>> always_refused(Type type) {
               {"corner_too_long", "[[0.0, 0.0, 0.0], [0.03, 0.03]]"}, {"table", "{ min = [0.0, 0.0] }"},
               {"nan", "[[nan, 0.0], [0.03, 0.03]]"}, {"inf", "[[0.0, 0.0], [inf, 0.03]]"},
               {"beyond_double", "[[0.0, 0.0], [1e999, 0.03]]"}};
+    // Three points, the first one bad: an outline needs three, and a curve's control points are
+    // each read before they are counted.
+    case Type::points:
+      return {{"string", "\"0.1\""}, {"number", "0.1"}, {"empty", "[]"}, {"flat", "[0.01, 0.01, 0.01]"},
+              {"table", "{ x = 0.01 }"}, {"point_too_long", "[[0.01, 0.01, 0.01], [0.02, 0.0], [0.0, 0.02]]"},
+              {"point_too_short", "[[0.01], [0.02, 0.0], [0.0, 0.02]]"},
+              {"string_element", "[[\"a\", 0.01], [0.02, 0.0], [0.0, 0.02]]"},
+              {"bool_element", "[[true, 0.01], [0.02, 0.0], [0.0, 0.02]]"},
+              {"point_a_table", "[{ x = 0.01, y = 0.01 }, [0.02, 0.0], [0.0, 0.02]]"},
+              {"nan", "[[nan, 0.01], [0.02, 0.0], [0.0, 0.02]]"}, {"inf", "[[inf, 0.01], [0.02, 0.0], [0.0, 0.02]]"},
+              {"beyond_double", "[[1e999, 0.01], [0.02, 0.0], [0.0, 0.02]]"}};
+    case Type::side:
+      return {{"string", "\"left\""}, {"number", "1"}, {"too_short", "[\"left\"]"}, {"too_long", "[\"left\", 1, 2]"},
+              {"swapped", "[1, \"left\"]"}, {"float_edge", "[\"left\", 1.0]"}, {"bool_edge", "[\"left\", true]"},
+              {"nested", "[[\"left\"], 1]"}, {"table", "{ panel = \"left\", edge = 1 }"}, {"nan", "[\"left\", nan]"},
+              {"beyond_int64", "[\"left\", 99999999999999999999]"}};
     default:
       return {};
   }
@@ -619,20 +817,26 @@ std::string column_value(Type type, const std::string& column) {
     if (vector) return vec_of(type, "-0.01");
     if (type == Type::int_pair) return "[-1, 2]";
     if (type == Type::box) return "[[-0.01, -0.01], [0.03, 0.03]]";
+    if (type == Type::side) return "[\"left\", -1]";
   } else if (column == "zero") {
     if (type == Type::number) return "0.0";
     if (type == Type::integer) return "0";
     if (vector) return vec_of(type, "0.0");
     if (type == Type::int_pair) return "[0, 0]";
     if (type == Type::box) return "[[0.0, 0.0], [0.0, 0.0]]";
+    if (type == Type::points) return "[[0.0, 0.0], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0]]";
+    if (type == Type::side) return "[\"left\", 0]";
   } else if (column == "huge") {
     if (type == Type::number) return "1e300";
     if (type == Type::integer) return "99999999999";
     if (vector) return vec_of(type, "1e300");
     if (type == Type::int_pair) return "[99999999999, 2]";
     if (type == Type::box) return "[[0.0, 0.0], [1e300, 1e300]]";
+    if (type == Type::points) return "[[1e300, 0.0], [0.02, 0.0], [0.0, 0.02]]";
+    if (type == Type::side) return "[\"left\", 99999999999]";
   } else if (column == "empty") {
     if (type == Type::text || type == Type::choice) return "\"\"";
+    if (type == Type::side) return "[\"\", 1]";
   }
   return "";
 }
@@ -731,7 +935,15 @@ void edit_section(SceneText* scene, const Case& c) {
   sections.erase(std::remove_if(sections.begin(), sections.end(),
                                 [&](const Section& s) { return is_section_of(s.name, c.key); }),
                  sections.end());
-  if (c.edit == Edit::root_value) scene->root.push_back({c.key, c.value});
+  if (c.edit != Edit::root_value) return;
+  // A table inside another ([[fabric.panel]]) becomes a key of its parent's: panel = 3 in [fabric].
+  const auto dot = c.key.rfind('.');
+  if (dot == std::string::npos) {
+    scene->root.push_back({c.key, c.value});
+    return;
+  }
+  for (auto& s : sections)
+    if (s.name == c.key.substr(0, dot)) s.entries.push_back({c.key.substr(dot + 1), c.value});
 }
 
 void edit_entry(SceneText* scene, const Case& c) {
@@ -788,8 +1000,14 @@ std::optional<InputError> build_error(const Scene& scene) {
 // section) is in the file.
 void expect_names(const InputError& e, const std::string& key, int line) {
   const std::string what = e.what();
-  EXPECT_EQ(e.where().key, key) << what;
   EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  if (key.rfind("file:", 0) == 0) {  // another file's error: that file, and no key of the scene's
+    const std::string file = test::source_path(key.substr(5));
+    EXPECT_EQ(e.where().file, file) << what;
+    EXPECT_EQ(what.rfind(file + ":", 0), 0u) << what << "\ndoes not start with " << file << ":";
+    return;
+  }
+  EXPECT_EQ(e.where().key, key) << what;
   if (line > 0) {
     EXPECT_EQ(e.where().line, line) << what;
     const std::string prefix = scene_path() + ":" + std::to_string(line) + ": " + key + ": ";
@@ -828,7 +1046,8 @@ INSTANTIATE_TEST_SUITE_P(EveryKey, SceneBadValue, ::testing::ValuesIn(all_cases(
 
 // The base scenes are valid through to a model: every failure above is the edited key's.
 TEST(SceneBadValueTable, BaseScenesBuildAModel) {
-  for (const Base base : {Base::lift, Base::wrap, Base::circle, Base::arc, Base::jittered, Base::travel}) {
+  for (const Base base : {Base::lift, Base::wrap, Base::circle, Base::arc, Base::jittered, Base::travel, Base::panels,
+                          Base::pattern}) {
     const std::string text = render(base_scene(base)).text;
     const Scene scene = parse_scene(text, scene_path());
     EXPECT_NO_THROW(build_model(scene)) << text;
@@ -870,7 +1089,10 @@ TEST(SceneBadValueTable, ListsEveryKeyTheParserKnows) {
       {Base::lift, "constraint.0"}, {Base::lift, "initial"}, {Base::lift, "solver"}, {Base::lift, "output"},
       {Base::wrap, "initial"},   {Base::circle, "fabric"}, {Base::arc, "fabric"},  {Base::circle, "shear"},
       {Base::circle, "bending"}, {Base::arc, "bending"},  {Base::circle, "drape"}, {Base::lift, "shear"},
-      {Base::travel, "body.0.path"}, {Base::circle, "clamp"}, {Base::jittered, "fabric"}};
+      {Base::travel, "body.0.path"}, {Base::circle, "clamp"}, {Base::jittered, "fabric"}, {Base::panels, ""},
+      {Base::panels, "fabric"},  {Base::panels, "fabric.panel.0"}, {Base::panels, "fabric.panel.0.curve.0"},
+      {Base::panels, "fabric.panel.0.curve.1"}, {Base::panels, "fabric.panel.1.curve.0"}, {Base::panels, "seam.0"},
+      {Base::panels, "initial"}, {Base::pattern, ""}, {Base::pattern, "fabric"}, {Base::pattern, "garment"}};
   for (const auto& [base, section] : sections) {
     const std::set<std::string> known = known_keys(base_scene(base), section);
     EXPECT_FALSE(known.empty()) << "no list of known keys for section '" << section << "'";

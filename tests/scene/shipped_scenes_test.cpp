@@ -107,6 +107,7 @@ INSTANTIATE_TEST_SUITE_P(Shipped, ShippedScene,
                                            SceneCase{"scenes/cusick.toml", "newton", 1e-6, 4},
                                            SceneCase{"scenes/cusick_woven.toml", "newton", 1e-6, 4},
                                            SceneCase{"scenes/tube.toml", "newton", 1e-5, 1000, true},
+                                           SceneCase{"scenes/sewn_tube.toml", "newton", 1e-5, 1000, true},
                                            SceneCase{"scenes/fold.toml", "newton", 1e-7, 100}),
                          [](const auto& case_info) {
                            const std::string file = case_info.param.file;  // scenes/NAME.toml
@@ -202,6 +203,46 @@ TEST(ShippedTube, PressesTheCylinderAsLaplaceSays) {
   ASSERT_EQ(seams.size(), 1u);
   EXPECT_NEAR(seams[0].tension_mean_N_m, model.warp.tension(strain), 0.01 * model.warp.tension(strain));
   EXPECT_LE(seams[0].gap_max_m, 1e-6);
+}
+
+// The same knit sewn from a front and a back panel: the seams close round the cylinder and the
+// tube presses it as the seamless one does, Laplace's p = T / r along its middle, T read from the
+// knit's table at the strain of its middle course, both panels' together; each seam carries T.
+TEST(ShippedSewnTube, PressesTheCylinderAsLaplaceSays) {
+  const Scene written = load_scene(test::source_path("scenes/sewn_tube.toml"));
+  const Model model = build_model(written);
+  const Scene scene = with_tolerance_in_newtons(written, model);
+  SolverState state = SolverState::at_start(model);
+  const Summary summary = solve(model, state, scene.solver);
+  ASSERT_TRUE(summary.converged()) << summary.message;
+  const double radius = 0.060;  // molds/cylinder_r60mm_h200mm.obj
+  const Fabric& f = model.fabric;
+  const double middle = 0.06;   // half the panels' 12 cm, in the flat layout's y
+  double round = 0.0, rest = 0.0;
+  for (const Spring& s : f.springs())
+    if (s.kind == SpringKind::warp && std::abs(f.rest_position(s.a).y() - middle) < 1e-9) {
+      round += (state.x[static_cast<std::size_t>(s.b)] - state.x[static_cast<std::size_t>(s.a)]).norm();
+      rest += s.rest_length;
+    }
+  EXPECT_NEAR(rest, 0.30, 1e-12);
+  const double strain = round / rest - 1.0;
+  EXPECT_NEAR(strain, 2.0 * M_PI * radius / rest - 1.0, 1e-3);  // on the cylinder
+  const double laplace_Pa = model.warp.tension(strain) / radius;
+  const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-8);
+  const ContactPressure pressure = contact_pressure(model, state.x, check.contact);
+  int along = 0;
+  for (int n = 0; n < f.node_count(); ++n)
+    if (std::abs(f.rest_position(n).y() - middle) < 1e-9) {
+      EXPECT_NEAR(pressure.node_Pa[static_cast<std::size_t>(n)], laplace_Pa, 0.02 * laplace_Pa) << "node " << n;
+      ++along;
+    }
+  EXPECT_EQ(along, 2 * 31);  // 31 nodes across each panel's 15 cm at 5 mm
+  const std::vector<SeamFigures> seams = seam_figures(model, state.x);
+  ASSERT_EQ(seams.size(), 2u);
+  for (const SeamFigures& seam : seams) {
+    EXPECT_NEAR(seam.tension_mean_N_m, model.warp.tension(strain), 0.01 * model.warp.tension(strain)) << seam.name;
+    EXPECT_LE(seam.gap_max_m, 1e-6) << seam.name;
+  }
 }
 
 // The knit folded in two on a table: with self-contact its upper ply rests on the lower one

@@ -18,10 +18,9 @@ struct PanelSpec {
   PanelOutline outline;     // m, in the panel's own plane
   double grain_deg = 0.0;   // the warp's direction in that plane, from its first axis
   // The pattern's placement of the panel's plane (initial shape "pattern"): a point (u, v) of it
-  // starts at R · (u, v, 0) + translation, R the rotation about x, then y, then z (fixed axes)
-  // by rotation_deg.
+  // starts at rotation · (u, v, 0) + translation_m.
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d translation_m = Eigen::Vector3d::Zero();
-  Eigen::Vector3d rotation_deg = Eigen::Vector3d::Zero();
 };
 
 /// A panel as meshed: its nodes (contiguous), and for every edge of its outline the nodes on it
