@@ -64,7 +64,10 @@ nlohmann::json fabric_json(const Fabric& fabric) {
   for (const SpringKind kind : {SpringKind::warp, SpringKind::weft, SpringKind::shear, SpringKind::bend})
     springs[to_string(kind)] = std::count_if(fabric.springs().begin(), fabric.springs().end(),
                                              [&](const Spring& s) { return s.kind == kind; });
+  nlohmann::json panels = nlohmann::json::array();  // a garment's: the order fabric.vtk's panel field numbers them
+  for (const PanelMesh& p : fabric.panels()) panels.push_back({{"name", p.name}, {"first_node", p.first_node}, {"nodes", p.node_count}});
   return {{"shape", fabric.spec().tube != FabricSpec::Tube::none ? "tube" : to_string(fabric.spec().shape)},
+          {"panels", panels.empty() ? nlohmann::json(nullptr) : panels},
           {"tube", fabric.spec().tube != FabricSpec::Tube::none ? nlohmann::json(to_string(fabric.spec().tube)) : nlohmann::json(nullptr)},
           {"mesh", to_string(fabric.spec().mesh)},
           {"nodes", fabric.node_count()},
@@ -195,6 +198,13 @@ std::string result_json(const RunRecord& run, const StateFigures& state, const C
     seams.push_back({{"name", f.name}, {"length_m", number(f.length_m)}, {"tension_mean_N_m", number(f.tension_mean_N_m)},
                      {"tension_max_N_m", number(f.tension_max_N_m)}, {"gap_max_m", number(f.gap_max_m)}});
   if (!seams.empty()) j["seams"] = seams;
+  // A garment's ease per panel: how far it stands off the body, over its area and at most.
+  if (state.ease) {
+    nlohmann::json ease = nlohmann::json::array();
+    for (const PanelEase& e : state.ease->panels)
+      ease.push_back({{"panel", e.panel}, {"mean_m", number(e.mean_m)}, {"max_m", number(e.max_m)}});
+    j["ease"] = ease;
+  }
   if (const std::optional<PlyFigures> plies = ply_figures(run.model, run.state.x))
     j["self_contact"] = {{"thickness_m", plies->thickness_m},
                          {"contact_pairs", plies->contact_pairs},
@@ -290,14 +300,26 @@ void vtk_field(NumberText& out, const char* name, const std::vector<double>& val
 
 using PointField = std::pair<const char*, std::vector<double>>;
 
-// What each node of the formed fabric carries into ParaView.
+// Each node's panel (its index in result.json's fabric.panels), for a garment.
+std::vector<double> node_panels(const Fabric& fabric) {
+  std::vector<double> panel(static_cast<std::size_t>(fabric.node_count()), 0.0);
+  for (std::size_t p = 0; p < fabric.panels().size(); ++p)
+    for (int k = 0; k < fabric.panels()[p].node_count; ++k)
+      panel[static_cast<std::size_t>(fabric.panels()[p].first_node + k)] = static_cast<double>(p);
+  return panel;
+}
+
+// What each node of the formed fabric carries into ParaView; a garment's also its panel and ease.
 std::vector<PointField> fabric_fields(const RunRecord& run, const StateFigures& state) {
-  return {{"strain_warp", state.strains.warp},
-          {"strain_weft", state.strains.weft},
-          {"contact", std::vector<double>(run.check.contact.begin(), run.check.contact.end())},
-          {"residual_N", run.check.residual_N},
-          {"draw_in_m", state.draw_in.per_node_m},
-          {"contact_pressure_Pa", state.pressure.node_Pa}};
+  std::vector<PointField> fields = {{"strain_warp", state.strains.warp},
+                                    {"strain_weft", state.strains.weft},
+                                    {"contact", std::vector<double>(run.check.contact.begin(), run.check.contact.end())},
+                                    {"residual_N", run.check.residual_N},
+                                    {"draw_in_m", state.draw_in.per_node_m},
+                                    {"contact_pressure_Pa", state.pressure.node_Pa}};
+  if (!run.model.fabric.panels().empty()) fields.push_back({"panel", node_panels(run.model.fabric)});
+  if (state.ease) fields.push_back({"ease_m", state.ease->node_m});
+  return fields;
 }
 
 // What each face of the formed fabric carries into ParaView.

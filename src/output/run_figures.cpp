@@ -27,7 +27,7 @@ std::pair<CellDeformationOptions, const char*> deformation_options(const RunReco
 StateFigures state_figures(const RunRecord& run) {
   const std::vector<Eigen::Vector3d>& x = run.state.x;
   return {fabric_figures(run.model, x, run.check.contact), node_strains(run.model, x), draw_in(run.model, x),
-          contact_pressure(run.model, x, run.check.contact)};
+          contact_pressure(run.model, x, run.check.contact), garment_ease(run.model, x)};
 }
 
 CellFigures cell_figures(const RunRecord& run) {

@@ -3,6 +3,7 @@
 // result.json, fabric.vtk, bodies.vtk and a load step's files only write them
 // (result_writer.hpp). Every state written has its StateFigures; the final state adds its
 // cells' (CellFigures), which a load step's files do not carry.
+#include "fabform/analysis/garment_ease.hpp"
 #include "fabform/analysis/cell_deformation.hpp"
 #include "fabform/analysis/contact_pressure.hpp"
 #include "fabform/model/spring_strains.hpp"
@@ -17,6 +18,7 @@ struct StateFigures {
   NodeStrains strains;       // per node
   DrawIn draw_in;
   ContactPressure pressure;  // on the nodes and on the bodies' vertices
+  std::optional<GarmentEase> ease;  // a garment's, on a body
 };
 
 struct CellFigures {
