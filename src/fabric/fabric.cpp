@@ -98,9 +98,10 @@ void Fabric::adopt(FabricLayout layout) {
     lattice_node_[static_cast<std::size_t>(j_of(k)) * static_cast<std::size_t>(lattice_size_[0]) +
                   static_cast<std::size_t>(i_of(k))] = k;
   // A lattice's cells are spacing × spacing exactly, as seed 003 writes them; corners at
-  // rounded multiples of the spacing would give areas off by ε·(size / spacing).
+  // rounded multiples of the spacing would give areas off by ε·(size / spacing). A panel's
+  // triangle (a staircase corner dropped) is half a cell or less, measured.
   for (const Face& f : faces_) {
-    const bool exact = std::all_of(f.corner.begin(), f.corner.begin() + f.corners, [&](int c) { return on_lattice(c); });
+    const bool exact = f.corners == 4 && std::all_of(f.corner.begin(), f.corner.end(), [&](int c) { return on_lattice(c); });
     face_areas_.push_back(exact ? spacing_[0] * spacing_[1] : face_area(f, rest_));
     flat_area_ += face_areas_.back();
   }
@@ -115,8 +116,9 @@ void Fabric::add_edge_springs() {
     const Eigen::Vector3d d = rest_position(side.second) - rest_position(side.first);
     const SpringKind kind = std::abs(d.x()) >= std::abs(d.y()) ? SpringKind::warp : SpringKind::weft;
     // A lattice's springs are its spacing long exactly, as seed 003 writes them (positions
-    // i·spacing differ from it by rounding).
-    const bool exact = on_lattice(side.first) && on_lattice(side.second);
+    // i·spacing differ from it by rounding); a panel triangle's chord across a cell is not one.
+    const bool neighbours = std::abs(i_of(side.first) - i_of(side.second)) + std::abs(j_of(side.first) - j_of(side.second)) == 1;
+    const bool exact = neighbours && on_lattice(side.first) && on_lattice(side.second);
     const double length = exact ? spacing_[kind == SpringKind::warp ? 0 : 1] : d.norm();
     springs_.push_back({side.first, side.second, length, share / length, kind});
   }

@@ -61,20 +61,58 @@ PanelGrid panel_grid(const PanelSpec& panel, const std::array<double, 2>& h) {
 
 // The cells whose centres lie inside the outline, less those that would make the boundary touch
 // itself at a node (two cells meeting only at a corner), which a boundary walk cannot pass.
+// Row by row, the cells whose centres lie between the outline's crossings of the row's centre
+// line (even–odd), in time proportional to the outline's points and the cells.
+void fill_rows(const PanelGrid& g, const std::array<double, 2>& h, std::vector<unsigned char>* in) {
+  const std::vector<Vec2>& p = g.outline.points;
+  const int nx = g.cells_x;
+  std::vector<std::vector<double>> crossings(static_cast<std::size_t>(g.cells_y));
+  for (std::size_t s = 0; s < p.size(); ++s) {
+    const Vec2& a = p[s];
+    const Vec2& b = p[(s + 1) % p.size()];
+    // The rows whose centre line y_j lies in [min, max) of the segment's y, each y_j computed
+    // one way only (the first row a row early, lest rounding skip it).
+    const double low = std::min(a.y(), b.y()), high = std::max(a.y(), b.y());
+    const int first = std::max(0, static_cast<int>(std::floor((low - g.origin.y()) / h[1] - 0.5)));
+    for (int j = first; j < g.cells_y; ++j) {
+      const double y = g.origin.y() + (j + 0.5) * h[1];
+      if (y >= high) break;
+      if (y < low) continue;
+      crossings[static_cast<std::size_t>(j)].push_back(a.x() + (b.x() - a.x()) * (y - a.y()) / (b.y() - a.y()));
+    }
+  }
+  for (int j = 0; j < g.cells_y; ++j) {
+    std::vector<double>& x = crossings[static_cast<std::size_t>(j)];
+    std::sort(x.begin(), x.end());
+    for (std::size_t c = 0; c + 1 < x.size(); c += 2) {
+      const int from = std::max(0, static_cast<int>(std::ceil((x[c] - g.origin.x()) / h[0] - 0.5)));
+      const int to = std::min(nx - 1, static_cast<int>(std::ceil((x[c + 1] - g.origin.x()) / h[0] - 0.5)) - 1);
+      for (int i = from; i <= to; ++i) (*in)[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i)] = 1;
+    }
+  }
+}
+
+// The cells whose centres lie inside the outline, less those that would make the boundary touch
+// itself at a node (two cells meeting only at a corner), which a boundary walk cannot pass: of
+// the two, the one with fewer neighbours goes, so that a tip is cut rather than the body.
 std::vector<unsigned char> inside_cells(const PanelGrid& g, const std::array<double, 2>& h) {
   const int nx = g.cells_x, ny = g.cells_y;
   std::vector<unsigned char> in(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), 0);
+  fill_rows(g, h, &in);
   const auto at = [&](int i, int j) -> unsigned char& { return in[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i)]; };
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) at(i, j) = g.outline.contains(g.origin + Vec2((i + 0.5) * h[0], (j + 0.5) * h[1]));
   const auto cell = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx && j < ny && at(i, j); };
+  const auto neighbours = [&](int i, int j) { return cell(i - 1, j) + cell(i + 1, j) + cell(i, j - 1) + cell(i, j + 1); };
+  const auto drop_one = [&](int ia, int ja, int ib, int jb) {
+    if (neighbours(ia, ja) < neighbours(ib, jb)) at(ia, ja) = 0;
+    else at(ib, jb) = 0;
+  };
   for (bool changed = true; changed;) {
     changed = false;
     for (int j = 0; j <= ny; ++j)
       for (int i = 0; i <= nx; ++i) {
         const bool ll = cell(i - 1, j - 1), lr = cell(i, j - 1), ul = cell(i - 1, j), ur = cell(i, j);
-        if (ll && ur && !lr && !ul) at(i, j) = 0, changed = true;
-        if (lr && ul && !ll && !ur) at(i - 1, j) = 0, changed = true;
+        if (ll && ur && !lr && !ul) drop_one(i - 1, j - 1, i, j), changed = true;
+        else if (lr && ul && !ll && !ur) drop_one(i, j - 1, i - 1, j), changed = true;
       }
   }
   return in;
@@ -242,6 +280,8 @@ void drop_folded_corners(std::vector<std::vector<int>>* chains, double least, Pa
         break;
       }
       renumbered[node] = -1;
+      // The corner facing the chord first: sides_of gives that side the triangle's whole area,
+      // the two lattice sides half each, as each family tiles it once.
       f = {{corner(2), corner(3), corner(1), -1}, 3};
     }
   int next = 0;
@@ -340,7 +380,7 @@ FabricLayout panel_layout(const FabricSpec& spec) {
       layout.moved.push_back(m.nodes.moved[n]);
     }
     for (Face f : m.nodes.faces) {
-      for (int c = 0; c < 4; ++c) f.corner[static_cast<std::size_t>(c)] += first;
+      for (int c = 0; c < f.corners; ++c) f.corner[static_cast<std::size_t>(c)] += first;
       layout.faces.push_back(f);
     }
     PanelMesh mesh{panel.name, first, static_cast<int>(m.nodes.point.size()), m.chains, m.grid.origin - shift, grain_rad(panel)};

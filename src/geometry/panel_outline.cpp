@@ -70,7 +70,7 @@ bool crosses_itself(const std::vector<Vec2>& points) {
 
 // A bound on edge k's length: an arc's own, a Bézier curve's control polygon (never shorter
 // than the curve).
-double length_bound(const PanelOutline& outline, int k) {
+double edge_length_bound(const PanelOutline& outline, int k) {
   const Vec2& a = outline.vertices[static_cast<std::size_t>(k)];
   const Vec2& b = outline.vertices[(static_cast<std::size_t>(k) + 1) % outline.vertices.size()];
   const OutlineEdge& e = outline.edges[static_cast<std::size_t>(k)];
@@ -82,9 +82,11 @@ double length_bound(const PanelOutline& outline, int k) {
 }
 
 // The number of segments a curve is traced with: enough that none is longer than max_segment,
-// at least 8.
+// at least 8 (and, as a guard, at most kMaxSegments: callers bound the ratio well below).
+constexpr double kMaxSegments = 1e8;
+
 int segments_for(const PanelOutline& outline, int k, double max_segment) {
-  return std::max(8, static_cast<int>(std::ceil(length_bound(outline, k) / max_segment)));
+  return static_cast<int>(std::clamp(std::ceil(edge_length_bound(outline, k) / max_segment), 8.0, kMaxSegments));
 }
 
 }  // namespace
@@ -106,15 +108,24 @@ std::string PanelOutline::invalid_reason() const {
       return edge + " needs " + std::to_string(controls_needed(e.kind)) + " control point(s)";
     for (const Vec2& c : e.controls)
       if (!c.allFinite()) return edge + " has a control point that is not finite";
+    if (e.kind == OutlineEdge::Kind::arc && !std::isfinite(e.radius_m)) return edge + " is an arc whose radius is not finite";
     if (e.kind == OutlineEdge::Kind::arc && !(e.radius_m >= 0.5 * chord.norm() * (1.0 - 1e-9)))
       return edge + " is an arc whose radius is shorter than half the distance between its ends";
   }
   // Traced in at most a few thousand segments, as the check is quadratic in them.
-  double extent = 0.0, length = 0.0;
+  double extent = 0.0;
   for (const Vec2& v : vertices) extent = std::max(extent, (v - vertices[0]).norm());
-  for (std::size_t k = 0; k < edges.size(); ++k) length += length_bound(*this, static_cast<int>(k));
-  if (crosses_itself(trace_outline(*this, std::max(extent / 256.0, length / 4096.0)).points)) return "the outline crosses itself";
+  const std::vector<Vec2> points = trace_outline(*this, std::max(extent / 256.0, length_bound() / 4096.0)).points;
+  for (const Vec2& p : points)
+    if (!p.allFinite()) return "the outline's curves reach beyond finite numbers";
+  if (crosses_itself(points)) return "the outline crosses itself";
   return "";
+}
+
+double PanelOutline::length_bound() const {
+  double length = 0.0;
+  for (std::size_t k = 0; k < edges.size(); ++k) length += edge_length_bound(*this, static_cast<int>(k));
+  return length;
 }
 
 Vec2 PanelOutline::point(int edge, double t) const {

@@ -15,7 +15,13 @@
 namespace fabform {
 namespace {
 
-using Json = nlohmann::json;
+// Ordered: a pattern without panel_order keeps its panels in the file's order.
+using Json = nlohmann::ordered_json;
+
+// GarmentCode's lengths are centimetres of a body; a value beyond a kilometre of them (or an
+// angle beyond a turn) is a broken file, and would overflow the geometry downstream.
+constexpr double kMaxPatternLength = 1e5;
+constexpr double kMaxAngle_deg = 360.0;
 using Vec2 = Eigen::Vector2d;
 
 // A JSON value's path, as the error names it: pattern.panels.left_ftorso.edges.3.
@@ -37,14 +43,20 @@ class Reader {
     return value.get<double>();
   }
 
-  Vec2 point(const Json& value, const std::string& path) const {
-    if (!value.is_array() || value.size() != 2) fail(path, "must be an array of two numbers");
-    return {number(value[0], path + ".0"), number(value[1], path + ".1")};
+  double bounded(const Json& value, const std::string& path, double limit) const {
+    const double v = number(value, path);
+    if (std::abs(v) > limit) fail(path, "must lie within ±" + std::to_string(static_cast<long long>(limit)));
+    return v;
   }
 
-  Eigen::Vector3d vector3(const Json& value, const std::string& path) const {
+  Vec2 point(const Json& value, const std::string& path, double limit = kMaxPatternLength) const {
+    if (!value.is_array() || value.size() != 2) fail(path, "must be an array of two numbers");
+    return {bounded(value[0], path + ".0", limit), bounded(value[1], path + ".1", limit)};
+  }
+
+  Eigen::Vector3d vector3(const Json& value, const std::string& path, double limit) const {
     if (!value.is_array() || value.size() != 3) fail(path, "must be an array of three numbers");
-    return {number(value[0], path + ".0"), number(value[1], path + ".1"), number(value[2], path + ".2")};
+    return {bounded(value[0], path + ".0", limit), bounded(value[1], path + ".1", limit), bounded(value[2], path + ".2", limit)};
   }
 
   int index(const Json& value, const std::string& path, std::size_t count) const {
@@ -69,6 +81,8 @@ Json parsed(const std::string& path) {
     const auto upto = std::min<std::size_t>(e.byte, text.size());
     const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(upto), '\n'));
     throw InputError({path, line, ""}, "not JSON (a GarmentCode *_specification.json is)");
+  } catch (const Json::exception& e) {  // a number it cannot hold (1e400)
+    throw InputError({path, 0, ""}, std::string("not a sewing pattern's JSON: ") + e.what());
   }
 }
 
@@ -87,14 +101,15 @@ OutlineEdge read_curve(const Reader& r, const Json& edge, const Vec2& a, const V
     const std::size_t n = type == "quadratic" ? 1 : 2;
     if (!params.is_array() || params.size() != n) r.fail(at + ".params", "a " + type + " curve has " + std::to_string(n) + " control point(s)");
     for (std::size_t k = 0; k < n; ++k) {
-      const Vec2 rel = r.point(params[k], at + ".params." + std::to_string(k));
+      // Relative to the edge: a control a thousand edges away is no curve of a garment.
+      const Vec2 rel = r.point(params[k], at + ".params." + std::to_string(k), 1e3);
       e.controls.push_back(a + rel.x() * d + rel.y() * normal);
     }
   } else if (type == "circle") {
     if (!params.is_array() || params.size() != 3) r.fail(at + ".params", "a circle arc has [radius, large_arc, right]");
     e.kind = OutlineEdge::Kind::arc;
     // GarmentCode's radius may fall short of half the chord by rounding; SVG takes it as half.
-    e.radius_m = std::max(r.number(params[0], at + ".params.0") / unit, 0.5 * d.norm() / unit);
+    e.radius_m = std::max(r.bounded(params[0], at + ".params.0", kMaxPatternLength) / unit, 0.5 * d.norm() / unit);
     e.large_arc = r.number(params[1], at + ".params.1") != 0.0;
     e.counter_clockwise = r.number(params[2], at + ".params.2") != 0.0;
   } else {
@@ -132,8 +147,10 @@ PanelSpec read_panel(const Reader& r, const std::string& name, const Json& panel
     p.outline.edges.push_back(read_curve(r, edges[k], a, b, unit, path + ".edges." + std::to_string(k)));
   }
   if (const std::string why = p.outline.invalid_reason(); !why.empty()) r.fail(path, why);
-  if (panel.contains("translation")) p.translation_m = r.vector3(panel.at("translation"), path + ".translation") / unit;
-  if (panel.contains("rotation")) p.rotation = rotation_from_degrees(r.vector3(panel.at("rotation"), path + ".rotation"));
+  if (panel.contains("translation"))
+    p.translation_m = r.vector3(panel.at("translation"), path + ".translation", kMaxPatternLength) / unit;
+  if (panel.contains("rotation"))
+    p.rotation = rotation_from_degrees(r.vector3(panel.at("rotation"), path + ".rotation", kMaxAngle_deg));
   return p;
 }
 
@@ -154,6 +171,7 @@ SewingPattern::Stitch read_stitch(const Reader& r, const Json& stitch, std::size
     if (stitch[2] != "right_wrong") r.fail(path + ".2", "the only stitch flag is \"right_wrong\"");
     s.same_direction = true;
   }
+  if (s.panel[0] == s.panel[1] && s.edge[0] == s.edge[1]) r.fail(path, "sews an edge to itself");
   return s;
 }
 
@@ -165,7 +183,7 @@ SewingPattern read_garmentcode_pattern(const std::string& path, double grain_deg
   const Json& pattern = r.member(json, "pattern", "");
   const Json& properties = r.member(json, "properties", "");
   const double unit = r.number(r.member(properties, "units_in_meter", "properties"), "properties.units_in_meter");
-  if (!(unit > 0.0)) r.fail("properties.units_in_meter", "must be positive");
+  if (!(unit >= 1e-3 && unit <= 1e6)) r.fail("properties.units_in_meter", "must be between 0.001 and 1e6 (100: centimetres)");
   if (properties.contains("curvature_coords") && properties.at("curvature_coords") != "relative")
     r.fail("properties.curvature_coords", "must be \"relative\" (absolute control points are an older format)");
   const Json& panels = r.member(pattern, "panels", "pattern");
@@ -174,11 +192,13 @@ SewingPattern read_garmentcode_pattern(const std::string& path, double grain_deg
   std::map<std::string, int> index;
   // The pattern's own order when it gives one, else the file's.
   std::vector<std::string> order;
+  const auto listed = [&](const std::string& name) { return std::find(order.begin(), order.end(), name) != order.end(); };
   if (pattern.contains("panel_order") && pattern.at("panel_order").is_array())
     for (const Json& name : pattern.at("panel_order"))
-      if (name.is_string() && panels.contains(name.get<std::string>())) order.push_back(name.get<std::string>());
+      if (name.is_string() && panels.contains(name.get<std::string>()) && !listed(name.get<std::string>()))
+        order.push_back(name.get<std::string>());
   for (auto it = panels.begin(); it != panels.end(); ++it)
-    if (std::find(order.begin(), order.end(), it.key()) == order.end()) order.push_back(it.key());
+    if (!listed(it.key())) order.push_back(it.key());
   for (const std::string& name : order) {
     index[name] = static_cast<int>(out.panels.size());
     out.panels.push_back(read_panel(r, name, panels.at(name), unit, grain_deg));

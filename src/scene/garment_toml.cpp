@@ -106,10 +106,12 @@ void check_names_differ(TableReader& r, const std::string& key, const std::vecto
       if (panels[a].name == panels[b].name) r.fail(key, "two panels are named '" + shown(panels[a].name) + "'");
 }
 
+// To a thousandth of the panel (the ratio it is compared with is 2), in at most 1e5 segments.
 double edge_length(const PanelSpec& panel, int edge) {
   double extent = 0.0;
   for (const Eigen::Vector2d& v : panel.outline.vertices) extent = std::max(extent, (v - panel.outline.vertices[0]).norm());
-  return trace_outline(panel.outline, 1e-3 * extent).edge_length[static_cast<std::size_t>(edge)];
+  const double segment = std::max(1e-3 * extent, 1e-5 * panel.outline.length_bound());
+  return trace_outline(panel.outline, segment).edge_length[static_cast<std::size_t>(edge)];
 }
 
 // Edges sewn together are of about one length: ease and gathers, up to kMaxSeamLengthRatio.
@@ -169,11 +171,18 @@ void read_garment(TableReader garment, Scene* scene) {
   scene->fabric.panels = std::move(pattern.panels);
   for (std::size_t k = 0; k < pattern.stitches.size(); ++k) {
     const SewingPattern::Stitch& stitch = pattern.stitches[k];
-    SeamSpec s{"stitch" + std::to_string(k), stitch.panel, stitch.edge, stitch.same_direction, garment.locate_key("pattern")};
-    if (const std::string why = length_mismatch(*scene, s); !why.empty())
-      throw InputError({scene->pattern_path, 0, "pattern.stitches." + std::to_string(k)}, why);
-    scene->seams.push_back(s);
+    scene->seams.push_back({"stitch" + std::to_string(k), stitch.panel, stitch.edge, stitch.same_direction, garment.locate_key("pattern")});
   }
+}
+
+void check_panels(TableReader& fabric, Scene* scene) {
+  if (scene->fabric.panels.empty())
+    fabric.fail("panel", "a fabric of panels needs [[fabric.panel]] tables or a [garment] pattern");
+  check_spacing(fabric, scene->fabric);
+  // The pattern's stitches, once its panels are known to be of a size the lattice can take.
+  for (std::size_t k = 0; k < scene->seams.size(); ++k)
+    if (const std::string why = length_mismatch(*scene, scene->seams[k]); !why.empty())
+      throw InputError({scene->pattern_path, 0, "pattern.stitches." + std::to_string(k)}, why);
 }
 
 void read_seams(std::vector<TableReader> seams, Scene* scene) {
@@ -200,8 +209,6 @@ void read_seams(std::vector<TableReader> seams, Scene* scene) {
 
 void mesh_panels(TableReader& fabric, Scene* scene) {
   FabricSpec& f = scene->fabric;
-  if (f.panels.empty()) fabric.fail("panel", "a fabric of panels needs [[fabric.panel]] tables or a [garment] pattern");
-  check_spacing(fabric, f);
   try {
     Fabric meshed(f);
   } catch (const std::invalid_argument& e) {

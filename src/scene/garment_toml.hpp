@@ -12,15 +12,22 @@ namespace fabform {
 /// [fabric] of shape "panels": spacing_m and the [[fabric.panel]] tables, if any.
 void read_panels(TableReader& fabric, Scene* scene);
 
-/// [garment]: pattern (a GarmentCode *_specification.json), its panels' grain_deg; its panels
-/// become the fabric's (which must be of shape "panels" and give none itself), its stitches seams.
+/// [garment]: pattern (a GarmentCode *_specification.json), its panels' grain_deg and the turn
+/// of its world into the scene's (rotation_deg); its panels become the fabric's (which must be
+/// of shape "panels" and give none itself), its stitches seams.
 void read_garment(TableReader garment, Scene* scene);
 
-/// The [[seam]] tables, after the panels.
+/// A fabric of panels has some, each within kMaxCellsAcross cells of the spacing across it (a
+/// spacing in the wrong unit is refused before anything is traced), and a pattern's stitches sew
+/// edges of about one length.
+void check_panels(TableReader& fabric, Scene* scene);
+
+/// The [[seam]] tables, after the panels are checked.
 void read_seams(std::vector<TableReader> seams, Scene* scene);
 
-/// The panels meshed once, so that a lattice too coarse for an outline is an error of the scene
-/// (blamed on spacing_m); the fabric's extent then set from the lattice.
+/// The panels meshed, so that a lattice too coarse for an outline is an error of the scene
+/// (blamed on spacing_m), not of the model built from it; the fabric's extent then set from the
+/// lattice.
 void mesh_panels(TableReader& fabric, Scene* scene);
 
 }  // namespace fabform

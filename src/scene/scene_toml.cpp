@@ -290,6 +290,10 @@ void read_pressure(TableReader r, Scene* scene) {
   // 1e7 Pa is a hundred atmospheres: beyond, a unit mistake.
   if (!(p.pressure_Pa != 0.0 && std::abs(p.pressure_Pa) <= 1e7))
     r.fail("pressure_Pa", "must be non-zero and within ±1e7 Pa");
+  // A pressure follows the faces' normals, and a garment's panels face whichever way their
+  // outlines run round (GarmentCode's back panels the other way from its fronts).
+  if (scene->fabric.shape == FabricSpec::Shape::panels)
+    r.fail("pressure_Pa", "a garment's panels do not all face out: a pressure on panels is not supported");
   r.reject_unknown({"pressure_Pa"});
 }
 
@@ -777,6 +781,7 @@ Scene read_scene(const toml::table& root, const std::string& path,
   TableReader fabric = r.table("fabric", true);
   read_fabric(fabric, &scene);
   if (r.has("garment")) read_garment(r.table("garment", false), &scene);
+  if (scene.fabric.shape == FabricSpec::Shape::panels) check_panels(fabric, &scene);
   read_seams(r.tables("seam"), &scene);
   if (scene.fabric.shape == FabricSpec::Shape::panels) mesh_panels(fabric, &scene);
   const auto bodies = r.tables("body");

@@ -95,8 +95,13 @@ TEST(PanelLayout, ARectanglePanelIsTheRectangle) {
 // Run clockwise, the same rectangle gives the same mesh; its edges follow the outline's way.
 TEST(PanelLayout, AClockwiseOutlineGivesItsEdgesItsWay) {
   PanelSpec p = rectangle_panel(0.3, 0.2);
+  const Fabric counter(panels_spec({p}, 0.01));
   p.outline.vertices = {{0, 0}, {0, 0.2}, {0.3, 0.2}, {0.3, 0}};
   const Fabric f(panels_spec({p}, 0.01));
+  ASSERT_EQ(f.node_count(), counter.node_count());
+  for (int n = 0; n < f.node_count(); ++n) EXPECT_EQ(f.rest_position(n), counter.rest_position(n));
+  ASSERT_EQ(f.faces().size(), counter.faces().size());
+  for (std::size_t k = 0; k < f.faces().size(); ++k) EXPECT_EQ(f.faces()[k].corner, counter.faces()[k].corner);
   const PanelMesh& mesh = f.panels().at(0);
   EXPECT_EQ(mesh.edge_nodes[0].front(), f.node(0, 0));
   EXPECT_EQ(mesh.edge_nodes[0].back(), f.node(0, 20));
@@ -140,9 +145,36 @@ TEST(PanelLayout, ACurvedPanelsBoundaryNodesLieOnItsOutline) {
   // at most (2/3)·l·l²/(8 r); ~150 chords round the panel.
   const double l = 1.5 * h, sliver = 2.0 / 3.0 * l * l * l / (8.0 * 0.05);
   EXPECT_NEAR(shoelace, exact.signed_area(), 150 * sliver);
-  std::vector<Eigen::Vector3d> rest;
-  for (int n = 0; n < f.node_count(); ++n) rest.push_back(f.rest_position(n));
-  for (const Face& face : f.faces()) EXPECT_GT(face_area(face, rest), 0.0);
+  // Every face turns counter-clockwise in the flat layout: both triangles of its split at
+  // corner 0 have positive signed area.
+  for (const Face& face : f.faces()) {
+    const auto at = [&](int c) { return Eigen::Vector2d(f.rest_position(face.corner[static_cast<std::size_t>(c)]).head<2>()); };
+    const auto twice = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+      const Eigen::Vector2d u = b - a, w = c - a;
+      return u.x() * w.y() - u.y() * w.x();
+    };
+    EXPECT_GT(twice(at(0), at(1), at(2)), 0.0);
+    if (face.corners == 4) {
+      EXPECT_GT(twice(at(0), at(2), at(3)), 0.0);
+    }
+  }
+}
+
+// A 45° edge through the lattice's nodes drops staircase corners to triangles whose three nodes
+// stay on the lattice: each is half a cell, and its chord is √2 spacings long, as measured.
+TEST(PanelLayout, TrianglesAlongADiagonalAreHalfCellsWithTheirChordsLength) {
+  PanelSpec triangle;
+  triangle.name = "gusset";
+  triangle.outline = {{{0, 0}, {0.1, 0}, {0.1, 0.1}}, {straight(), straight(), straight()}};
+  const Fabric f(panels_spec({triangle}, 0.01));
+  EXPECT_NEAR(f.flat_area(), 0.005, 1e-15);
+  int chords = 0;
+  for (const Spring& s : f.springs()) {
+    const double length = (f.rest_position(s.b) - f.rest_position(s.a)).norm();
+    EXPECT_NEAR(s.rest_length, length, 1e-15);
+    chords += std::abs(length - std::sqrt(2.0) * 0.01) < 1e-12;
+  }
+  EXPECT_GT(chords, 0);
 }
 
 // Cut with the grain at 30° in the pattern's plane, a rectangle turned by 30° is the upright one.

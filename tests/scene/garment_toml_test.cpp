@@ -267,6 +267,13 @@ TEST(GarmentScene, BadPatternsAreNamedByTheirPath) {
        "pattern.stitches.0.0.edge", "must be an index from 0 to 3"},
       {"{\"pattern\": {\"panels\": {" + replaced(panel, "[3, 0]", "[3, 1]") + "}, \"stitches\": []}, \"properties\": {\"units_in_meter\": 100}}",
        "pattern.panels.front.edges.3", "no loop"},
+      {"{\"pattern\": {\"panels\": {" + replaced(panel, "[10, 0]", "[1e400, 0]") + "}, \"stitches\": []}, \"properties\": {\"units_in_meter\": 100}}",
+       "", "not a sewing pattern's JSON"},
+      {"{\"pattern\": {\"panels\": {" + replaced(panel, "[10, 0]", "[1e200, 0]") + "}, \"stitches\": []}, \"properties\": {\"units_in_meter\": 100}}",
+       "pattern.panels.front.vertices.1.0", "must lie within"},
+      {"{\"pattern\": {\"panels\": {" + panel + "}, \"stitches\": [[{\"panel\": \"front\", \"edge\": 2}, {\"panel\": \"front\", \"edge\": 2}]]}, "
+       "\"properties\": {\"units_in_meter\": 100}}",
+       "pattern.stitches.0", "sews an edge to itself"},
   };
   for (const Case& c : cases) {
     dir.write("p.json", c.json);

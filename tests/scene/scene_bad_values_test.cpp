@@ -406,23 +406,20 @@ const std::vector<KeyRow>& key_table() {
        {{"missing", kRemove, R, "fabric.size_m"}, {"upper_case", "\"Panels\"", R, kSame},
         {"rectangle_without_its_keys", "\"rectangle\"", R, "fabric.size_m"}}},
       // A panel is meshed while its lattice cells form one piece: one cell of 5 cm each does, a
-      // lattice of 10 cm (or 1e300 m) does not. One of more than 50 million nodes is refused
-      // before it is meshed: at 5 µm, 2 x 1e8 nodes. At 1 pm the cells a side (5e10) overflow an
-      // int: refused here only as the mis-sized lattice of these curved panels falls apart
-      // (straight ones are meshed as one cell each). At 1 nm the outline is traced with 1.6e9
-      // points an edge until memory runs out (std::bad_alloc, not an InputError): left out, as
-      // it would take the machine's memory with it.
+      // lattice of 10 cm (or 1e300 m) does not. More than 10000 cells across a panel is refused
+      // before anything is traced: at 5 µm (1e4 across these 5 cm panels and their bows), 1 nm
+      // and 1 pm.
       {"fabric.spacing_m",               T::number,    panels, R, R,  R,   R,   _,    "",
        {{"warp_and_weft", "[0.01, 0.0125]", A, kSame}, {"one_direction_zero", "[0.01, 0.0]", R, kSame},
         {"one_direction_negative", "[-0.01, 0.01]", R, kSame}, {"three_values", "[0.01, 0.01, 0.01]", R, kSame},
         {"a_millimetre", "0.001", A, kSame}, {"a_cell_a_panel", "0.05", A, kSame},
         {"coarser_than_the_panels", "0.1", R, kSame}, {"five_micrometres", "5e-6", R, kSame},
-        {"a_picometre", "1e-12", R, kSame}}},
+        {"a_nanometre", "1e-9", R, kSame}, {"a_picometre", "1e-12", R, kSame}}},
       {"fabric.spacing_m",               T::only_extras, pattern, _, _, _, _,   _,    "",
        {{"coarser_than_the_cuffs", "0.1", R, kSame}}},
-      // Without panels the seam names one that is not there.
+      // A fabric of panels without any is refused before its seams are read.
       {"fabric.panel",                   T::table_array, panels, _, _, _,  _,   _,    "",
-       {{"missing", kRemove, R, "seam.0.a"}}},
+       {{"missing", kRemove, R, "fabric.panel"}}},
       // A seam names its panels: without its name (panel0) or with the other's, "left" is no panel.
       {"fabric.panel.0.name",            T::text,      panels, _, _,  _,   _,   R,    "",
        {{"missing", kRemove, R, "seam.0.a"}, {"newline", "\"le\\nft\"", R, kSame},
@@ -443,27 +440,24 @@ const std::vector<KeyRow>& key_table() {
       // Straight edges without.
       {"fabric.panel.0.curve",           T::table_array, panels, A, _, _,  _,   _,    "", {}},
       // One curve an edge: a second one on the arc's edge (3) or the quadratic's (0) is named by
-      // the curve that comes second. (The parser takes the second for the first, then blames
-      // vertices_m for the stale control point; an arc before a Bézier is silently replaced.)
-      // A value TOML cannot hold in a [[fabric.panel.curve]] (1e999, beyond 64 bits) is named
-      // like any other (the parser drops the panel's index and counts curves across panels:
-      // fabric.panel.curve.0.edge).
+      // the curve that comes second. A value TOML cannot hold in a [[fabric.panel.curve]] (1e999,
+      // beyond 64 bits) is named like any other, with its panel's and its curve's index.
       {"fabric.panel.0.curve.0.edge",    T::integer,   panels, R, R,  A,   R,   _,    "",
        {{"beyond_the_last", "4", R, kSame}, {"the_arcs", "3", R, "fabric.panel.0.curve.1.edge"}}},
       // Its control point given, the curve is a quadratic Bézier: one of quadratic_m, cubic_m or
-      // arc_radius_m, or the curve is no curve (named by its edge). A control point metres out is
-      // left out: the check that the outline does not cross itself takes a time quadratic in the
-      // curve's length (4 s at 3 m, 40 s at 10 m, a control point written in mm hangs it).
+      // arc_radius_m, or the curve is no curve (named by its edge). A control point 50 m out (a
+      // length written in mm) makes a panel 25 m across, refused as 2500 times the spacing's
+      // 10000 cells; the check that the outline does not cross itself is bounded in segments.
       {"fabric.panel.0.curve.0.quadratic_m", T::points, panels, _, _,  _,   R,   _,    "",
        {{"missing", kRemove, R, "fabric.panel.0.curve.0.edge"}, {"two_points", "[[0.02, -0.005], [0.03, -0.005]]", R, kSame},
         {"on_the_chord", "[[0.025, 0.0]]", A, kSame}, {"at_a_vertex", "[[0.0, 0.0]]", A, kSame},
         {"a_fifth_of_a_metre_out", "[[0.025, -0.2]]", A, kSame}, {"beyond_1e6_m", "[[0.025, -2e6]]", R, kSame},
+        {"in_millimetres", "[[25.0, -50.0]]", R, "fabric.spacing_m"},
         {"across_the_panel", "[[0.025, 0.2]]", R, "fabric.panel.0.vertices_m"},
         {"and_an_arc", "[[0.025, -0.005]]\narc_radius_m = 0.05", R, "fabric.panel.0.curve.0.edge"}}},
       {"fabric.panel.0.curve.1.edge",    T::integer,   panels, R, R,  _,   R,   _,    "",
        {{"beyond_the_last", "4", R, kSame}, {"the_quadratics", "0", R, kSame}, {"the_seams", "1", A, kSame}}},
-      // An arc's radius is at least half its chord (5 cm here): a semicircle at that. (The parser
-      // blames vertices_m for a shorter one.)
+      // An arc's radius is at least half its chord (5 cm here): a semicircle at that.
       {"fabric.panel.0.curve.1.arc_radius_m", T::number, panels, _, R, R,  R,   _,    "",
        {{"missing", kRemove, R, "fabric.panel.0.curve.1.edge"}, {"half_the_chord", "0.025", A, kSame},
         {"shorter_than_half_the_chord", "0.02", R, kSame},
@@ -499,9 +493,8 @@ const std::vector<KeyRow>& key_table() {
       {"initial.shape",                  T::only_extras, panels, _, _, _,  _,   _,    "",
        {{"missing", kRemove, A, kSame}, {"flat", "\"flat\"", A, kSame},
         {"lift_without_height", "\"lift\"", R, "initial.height_m"}, {"tube", "\"tube\"", R, kSame}}},
-      // Without the pattern the fabric has no panels. A pattern that cannot be read names its
-      // file (and, within it, the JSON path at fault). (A folder escapes the reader as
-      // std::ios_base::failure.)
+      // Without the pattern the fabric has no panels. A pattern that cannot be read (or a folder)
+      // names its file (and, within it, the JSON path at fault).
       {"garment",                        T::table,     pattern, _, _, _,   _,   _,    "",
        {{"missing", kRemove, R, "fabric.panel"}}},
       {"garment.pattern",                T::text,      pattern, R, _, _,   _,   R,    "",

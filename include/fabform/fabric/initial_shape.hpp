@@ -12,6 +12,8 @@
 namespace fabform {
 
 struct InitialShape {
+  // pattern: each panel of a garment where its pattern places it (PanelSpec's placement), the
+  // origin added; it takes no parameter.
   enum class Kind { flat, lift, bump, wrap, tube, fold, pattern };
   Kind kind = Kind::flat;
   double height_m = 0.0;  // lift: interior nodes raised by this; bump: peak of a sine bump
@@ -21,8 +23,6 @@ struct InitialShape {
   // fold: the fabric folded over across the warp at fold_at_m (from its left edge): the part
   // beyond laid back over the part before, height_m above it (a napkin folded in two).
   double fold_at_m = 0.0;
-  // pattern: each panel of a garment where its pattern places it (PanelSpec's placement), the
-  // origin added.
   // tube: a tube fabric's round direction once round the axis on that circle, its seam facing
   // facing_deg, its length vertical from the origin's z.
   Eigen::Vector2d axis_xy_m = Eigen::Vector2d::Zero();

@@ -31,6 +31,8 @@ struct PanelOutline {
   /// a control count that does not fit the curve, an arc's radius shorter than half its chord,
   /// the loop crossing itself), or "".
   std::string invalid_reason() const;
+  /// A bound on the outline's length: arcs' own, Bézier curves' control polygons.
+  double length_bound() const;
   /// The point at parameter t ∈ [0, 1] of edge k (t is the curve's own parameter, not arc length).
   Eigen::Vector2d point(int edge, double t) const;
 };
@@ -58,8 +60,8 @@ struct TracedOutline {
   double nearest_s(int edge, const Eigen::Vector2d& p) const;
 };
 
-/// The outline traced with segments no longer than max_segment_m (straight edges keep their
-/// two ends), arc lengths accurate to the polyline at that resolution. The outline must be valid.
+/// The outline traced with segments no longer than max_segment_m, at least 8 an edge (straight
+/// ones too), arc lengths accurate to the polyline at that resolution. The outline must be valid.
 TracedOutline trace_outline(const PanelOutline& outline, double max_segment_m);
 
 }  // namespace fabform
