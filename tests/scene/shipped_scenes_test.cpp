@@ -175,25 +175,39 @@ TEST(ShippedCadDie, FormsOverTheRibbedPartWithNoSpringThroughIt) {
   EXPECT_LE(find_spring_cuts(model, state.x).deepest_m, 1e-4);
 }
 
+// A shipped scene solved with the solver and to the tolerance it names.
+struct ShippedRest {
+  Model model;
+  SolverState state;
+  Summary summary;
+};
+
+ShippedRest shipped_rest(const std::string& file) {
+  const Scene written = load_scene(test::source_path(file));
+  ShippedRest r{build_model(written), {}, {}};
+  const Scene scene = with_tolerance_in_newtons(written, r.model);
+  r.state = SolverState::at_start(r.model);
+  r.summary = solve(r.model, r.state, scene.solver);
+  return r;
+}
+
 // The seamless tube on a cylinder larger than it (Laplace): along its middle row, away from its
 // rims, the pressure is p = T / r within 2 %, T the knit's table at the tube's hoop strain there
 // (measured from the formed row's circumference), r the cylinder's radius; its seam carries that
 // tension and stands open by less than a micrometre.
 TEST(ShippedTube, PressesTheCylinderAsLaplaceSays) {
-  const Scene written = load_scene(test::source_path("scenes/tube.toml"));
-  const Model model = build_model(written);
-  const Scene scene = with_tolerance_in_newtons(written, model);
-  SolverState state = SolverState::at_start(model);
-  const Summary summary = solve(model, state, scene.solver);
-  ASSERT_TRUE(summary.converged()) << summary.message;
+  const ShippedRest rest = shipped_rest("scenes/tube.toml");
+  ASSERT_TRUE(rest.summary.converged()) << rest.summary.message;
+  const Model& model = rest.model;
+  const SolverState& state = rest.state;
   const double radius = 0.060;  // molds/cylinder_r60mm_h200mm.obj
   const Fabric& f = model.fabric;
   const int middle = f.nodes_weft() / 2;
   double round = 0.0;
   for (int i = 0; i + 1 < f.nodes_warp(); ++i)
     round += (state.x[static_cast<std::size_t>(f.node(i + 1, middle))] - state.x[static_cast<std::size_t>(f.node(i, middle))]).norm();
-  const double strain = round / scene.fabric.width_m - 1.0;
-  EXPECT_NEAR(strain, 2.0 * M_PI * radius / scene.fabric.width_m - 1.0, 1e-3);  // on the cylinder
+  const double strain = round / model.fabric.spec().width_m - 1.0;
+  EXPECT_NEAR(strain, 2.0 * M_PI * radius / model.fabric.spec().width_m - 1.0, 1e-3);  // on the cylinder
   const double laplace_Pa = model.warp.tension(strain) / radius;
   const EquilibriumReport check = measure_equilibrium(model, state.x, 1e-8);
   const ContactPressure pressure = contact_pressure(model, state.x, check.contact);
@@ -209,12 +223,10 @@ TEST(ShippedTube, PressesTheCylinderAsLaplaceSays) {
 // tube presses it as the seamless one does, Laplace's p = T / r along its middle, T read from the
 // knit's table at the strain of its middle course, both panels' together; each seam carries T.
 TEST(ShippedSewnTube, PressesTheCylinderAsLaplaceSays) {
-  const Scene written = load_scene(test::source_path("scenes/sewn_tube.toml"));
-  const Model model = build_model(written);
-  const Scene scene = with_tolerance_in_newtons(written, model);
-  SolverState state = SolverState::at_start(model);
-  const Summary summary = solve(model, state, scene.solver);
-  ASSERT_TRUE(summary.converged()) << summary.message;
+  const ShippedRest sewn = shipped_rest("scenes/sewn_tube.toml");
+  ASSERT_TRUE(sewn.summary.converged()) << sewn.summary.message;
+  const Model& model = sewn.model;
+  const SolverState& state = sewn.state;
   const double radius = 0.060;  // molds/cylinder_r60mm_h200mm.obj
   const Fabric& f = model.fabric;
   const double middle = 0.06;   // half the panels' 12 cm, in the flat layout's y
