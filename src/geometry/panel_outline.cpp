@@ -174,6 +174,12 @@ TracedOutline trace_outline(const PanelOutline& outline, double max_segment_m) {
   return traced;
 }
 
+std::pair<std::size_t, std::size_t> TracedOutline::edge_points(int k) const {
+  const auto e = static_cast<std::size_t>(k);
+  return {static_cast<std::size_t>(edge_first[e]),
+          e + 1 < edge_first.size() ? static_cast<std::size_t>(edge_first[e + 1]) : points.size()};
+}
+
 double TracedOutline::signed_area() const {
   double twice = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) twice += cross(points[i], points[(i + 1) % points.size()]);
@@ -195,8 +201,7 @@ Vec2 TracedOutline::at(int k, double s_at) const {
   const auto e = static_cast<std::size_t>(k);
   const double length = edge_length[e];
   s_at = std::clamp(s_at, 0.0, length);
-  const auto first = static_cast<std::size_t>(edge_first[e]);
-  const std::size_t end = e + 1 < edge_first.size() ? static_cast<std::size_t>(edge_first[e + 1]) : points.size();
+  const auto [first, end] = edge_points(k);
   // The traced points of the edge and its end vertex (t = 1, s = length) bracket s_at.
   double s0 = 0.0, t0 = 0.0;
   for (std::size_t i = first; i < end; ++i) {
@@ -212,8 +217,7 @@ Vec2 TracedOutline::at(int k, double s_at) const {
 
 double TracedOutline::nearest_s(int k, const Vec2& p) const {
   const auto e = static_cast<std::size_t>(k);
-  const auto first = static_cast<std::size_t>(edge_first[e]);
-  const std::size_t end = e + 1 < edge_first.size() ? static_cast<std::size_t>(edge_first[e + 1]) : points.size();
+  const auto [first, end] = edge_points(k);
   double best = std::numeric_limits<double>::infinity(), best_s = 0.0;
   for (std::size_t i = first; i < end; ++i) {
     const Vec2& a = points[i];

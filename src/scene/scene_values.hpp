@@ -46,7 +46,7 @@ inline std::string number_text(double value) {
 inline bool has_control_character(const std::string& value) { return shown(value) != value; }
 
 inline void check_magnitude(TableReader& r, const std::string& key, double magnitude, double limit,
-                     const char* unit) {
+                            const char* unit) {
   if (magnitude > limit)
     r.fail(key, "must be between -" + number_text(limit) + " and " + number_text(limit) + " " + unit);
 }
@@ -69,7 +69,7 @@ inline Eigen::Matrix<double, N, 1> angles(TableReader& r, const std::string& key
 // one-line messages and file headers. Only a value written is checked; a key left out takes
 // its default.
 inline std::string plain_text(TableReader& r, const std::string& key, const std::string& fallback,
-                       bool required = false) {
+                              bool required = false) {
   std::string value = r.text(key, fallback, required);
   if (r.has(key) && value.empty()) r.fail(key, "must not be empty");
   if (has_control_character(value)) r.fail(key, "must not hold control characters (got '" + shown(value) + "')");

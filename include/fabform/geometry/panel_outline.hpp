@@ -6,6 +6,7 @@
 // polyline that remembers, for every point, its edge and its arc length along it, so that a
 // lattice's boundary nodes can be put on the outline and seams matched by arc length.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -58,6 +59,8 @@ struct TracedOutline {
   Eigen::Vector2d at(int edge, double s) const;
   /// The arc length along edge k of the point of that edge nearest to p.
   double nearest_s(int edge, const Eigen::Vector2d& p) const;
+  /// The range [first, end) of edge k's traced points.
+  std::pair<std::size_t, std::size_t> edge_points(int edge) const;
 };
 
 /// The outline traced with segments no longer than max_segment_m, at least 8 an edge (straight
