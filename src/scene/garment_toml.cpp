@@ -50,7 +50,7 @@ void read_curve(TableReader& r, PanelOutline* outline) {
   check_size(r, "arc_radius_m", e.radius_m);
   const double chord = (outline->vertices[(static_cast<std::size_t>(edge) + 1) % outline->vertices.size()] -
                         outline->vertices[static_cast<std::size_t>(edge)]).norm();
-  if (e.radius_m < 0.5 * chord)
+  if (e.radius_m < 0.5 * chord * (1.0 - 1e-9))  // a semicircle, to rounding
     r.fail("arc_radius_m", "is shorter than half the distance between the edge's ends (" + number_text(chord) + " m)");
   const std::string turn = r.text("turn", "counter_clockwise");
   if (turn != "counter_clockwise" && turn != "clockwise")
