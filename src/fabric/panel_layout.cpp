@@ -59,8 +59,6 @@ PanelGrid panel_grid(const PanelSpec& panel, const std::array<double, 2>& h) {
   throw std::invalid_argument("panel '" + panel.name + "': " + why);
 }
 
-// The cells whose centres lie inside the outline, less those that would make the boundary touch
-// itself at a node (two cells meeting only at a corner), which a boundary walk cannot pass.
 // Row by row, the cells whose centres lie between the outline's crossings of the row's centre
 // line (even–odd), in time proportional to the outline's points and the cells.
 void fill_rows(const PanelGrid& g, const std::array<double, 2>& h, std::vector<unsigned char>* in) {
