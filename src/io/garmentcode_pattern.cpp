@@ -59,6 +59,11 @@ class Reader {
     return {bounded(value[0], path + ".0", limit), bounded(value[1], path + ".1", limit), bounded(value[2], path + ".2", limit)};
   }
 
+  // A flag written as a number (0, 1) or as true and false.
+  bool flag(const Json& value, const std::string& path) const {
+    return value.is_boolean() ? value.get<bool>() : number(value, path) != 0.0;
+  }
+
   int index(const Json& value, const std::string& path, std::size_t count) const {
     if (!value.is_number_integer() || value.get<long long>() < 0 || value.get<long long>() >= static_cast<long long>(count))
       fail(path, "must be an index from 0 to " + std::to_string(count - 1));
@@ -110,8 +115,8 @@ OutlineEdge read_curve(const Reader& r, const Json& edge, const Vec2& a, const V
     e.kind = OutlineEdge::Kind::arc;
     // GarmentCode's radius may fall short of half the chord by rounding; SVG takes it as half.
     e.radius_m = std::max(r.bounded(params[0], at + ".params.0", kMaxPatternLength) / unit, 0.5 * d.norm() / unit);
-    e.large_arc = r.number(params[1], at + ".params.1") != 0.0;
-    e.counter_clockwise = r.number(params[2], at + ".params.2") != 0.0;
+    e.large_arc = r.flag(params[1], at + ".params.1");
+    e.counter_clockwise = r.flag(params[2], at + ".params.2");
   } else {
     r.fail(at + ".type", "must be quadratic, cubic or circle");
   }
