@@ -139,9 +139,9 @@ bool one_piece(const std::vector<unsigned char>& in, int nx, int ny) {
 }
 
 // One panel meshed: nodes numbered row by row (j outer) from 0, its lattice (i, j) and point in
-// the turned frame, its faces, its boundary walk (counter-clockwise) and each node's moved flag.
+// the turned frame, its faces, its boundary walk (counter-clockwise; needed only until the
+// edges' chains are taken from it) and each node's moved flag.
 struct PanelNodes {
-  std::vector<int> node_of;  // (cells_x + 1) × (cells_y + 1) lattice points, -1 for none
   std::vector<std::array<int, 2>> lattice;
   std::vector<Vec2> point;
   std::vector<unsigned char> moved;
@@ -152,17 +152,17 @@ struct PanelNodes {
 PanelNodes panel_nodes(const PanelGrid& g, const std::vector<unsigned char>& in, const std::array<double, 2>& h) {
   const int nx = g.cells_x, ny = g.cells_y, px = nx + 1;
   PanelNodes p;
-  p.node_of.assign(static_cast<std::size_t>(px) * static_cast<std::size_t>(ny + 1), -1);
+  std::vector<int> node_of(static_cast<std::size_t>(px) * static_cast<std::size_t>(ny + 1), -1);  // -1: no node
   const auto used = [&](int i, int j) { return i >= 0 && j >= 0 && i < nx && j < ny && in[static_cast<std::size_t>(j * nx + i)]; };
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i)
       if (used(i, j) || used(i - 1, j) || used(i, j - 1) || used(i - 1, j - 1)) {
-        p.node_of[static_cast<std::size_t>(j * px + i)] = static_cast<int>(p.point.size());
+        node_of[static_cast<std::size_t>(j * px + i)] = static_cast<int>(p.point.size());
         p.lattice.push_back({i, j});
         p.point.push_back(g.origin + Vec2(i * h[0], j * h[1]));
       }
   p.moved.assign(p.point.size(), 0);
-  const auto node = [&](int i, int j) { return p.node_of[static_cast<std::size_t>(j * px + i)]; };
+  const auto node = [&](int i, int j) { return node_of[static_cast<std::size_t>(j * px + i)]; };
   std::vector<int> next(p.point.size(), -1);
   std::size_t sides = 0;
   for (int j = 0; j < ny; ++j)

@@ -45,6 +45,16 @@ Eigen::Vector3d gap_moved(const Stitch& s, const Positions& x, int node, const E
 
 Eigen::Vector3d gap(const Stitch& s, const Positions& x) { return gap_moved(s, x, -1, Eigen::Vector3d::Zero()); }
 
+}  // namespace
+
+double chain_length(const Fabric& fabric, const std::vector<int>& chain) {
+  double length = 0.0;
+  for (std::size_t k = 1; k < chain.size(); ++k) length += (fabric.rest_position(chain[k]) - fabric.rest_position(chain[k - 1])).norm();
+  return length;
+}
+
+namespace {
+
 // Each node's fraction of its chain's flat length.
 std::vector<double> arc_fractions(const Fabric& fabric, const std::vector<int>& chain, double* length) {
   if (chain.size() < 2) throw std::invalid_argument("a seam's edge needs at least 2 nodes");

@@ -209,12 +209,13 @@ void read_seams(std::vector<TableReader> seams, Scene* scene) {
 
 void mesh_panels(TableReader& fabric, Scene* scene) {
   FabricSpec& f = scene->fabric;
+  std::array<int, 2> extent = {0, 0};
   try {
-    Fabric meshed(f);
+    if (const std::string why = f.invalid_reason(); !why.empty()) throw std::invalid_argument(why);
+    extent = panel_layout(f).lattice_size;
   } catch (const std::invalid_argument& e) {
     fabric.fail("spacing_m", e.what());
   }
-  const std::array<int, 2> extent = panel_lattice_extent(f);
   f.divisions_warp = extent[0] - 1, f.divisions_weft = extent[1] - 1;
   f.width_m = f.divisions_warp * f.panel_spacing_m[0], f.height_m = f.divisions_weft * f.panel_spacing_m[1];
 }

@@ -466,9 +466,7 @@ Seam panel_seam(const SeamSpec& spec, const Fabric& fabric) {
   };
   std::vector<int> first = chain(0), second = chain(1);
   if (!spec.same_direction) std::reverse(second.begin(), second.end());
-  double length = 0.0;
-  for (std::size_t k = 1; k < first.size(); ++k) length += (fabric.rest_position(first[k]) - fabric.rest_position(first[k - 1])).norm();
-  return Seam{spec.name, stitches_by_arc_length(fabric, first, second), length};
+  return Seam{spec.name, stitches_by_arc_length(fabric, first, second), chain_length(fabric, first)};
 }
 
 // Seed 003's F_seams: a tube's seam or a garment's, one term for them all.

@@ -37,6 +37,9 @@ struct Seam {
   double length_m = 0.0;  // its first edge's length in the flat pattern
 };
 
+/// A chain of nodes' length in the flat fabric (m).
+double chain_length(const Fabric& fabric, const std::vector<int>& chain);
+
 /// The stitches of a seam between two chains of nodes (in order along the seam), matched by
 /// arc length in the flat fabric: every node of each chain on the other chain's point at its
 /// fraction of the length, each standing for half its share of its chain; the first chain's
