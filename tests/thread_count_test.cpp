@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fabform {
+namespace fabform::thread_count_test {
 namespace {
 
 TEST(ThreadCount, ThreadsInUseReadsWhatUseThreadsSet) {
@@ -17,4 +17,4 @@ TEST(ThreadCount, ThreadsInUseReadsWhatUseThreadsSet) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::thread_count_test

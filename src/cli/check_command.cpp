@@ -35,7 +35,7 @@ bool ends_with_obj(const std::string& path) {
   return tail == ".obj";
 }
 
-CheckArguments read_arguments(const CLI::App& command) {
+CheckArguments read_check_arguments(const CLI::App& command) {
   refuse_leftovers(command, "only one mesh can be checked at a time");
   CheckArguments parsed;
   if (const std::string* v = given(command, "MESH")) parsed.mesh = *v;
@@ -172,7 +172,7 @@ Command add_check_command(CLI::App& app) {
   command->add_option("--repair", "write the mesh repaired (merged, oriented, cracks closed) as OBJ")->type_name("OUT.obj");
   command->allow_extras();
   auto args = std::make_shared<CheckArguments>();
-  return {command, [command, args] { *args = read_arguments(*command); }, [args] { return check(*args); }};
+  return {command, [command, args] { *args = read_check_arguments(*command); }, [args] { return check(*args); }};
 }
 
 }  // namespace fabform::cli

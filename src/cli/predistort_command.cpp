@@ -27,7 +27,7 @@ struct PredistortArguments {
   std::vector<std::string> files;  // RESULT_DIR, IMAGE, OUT
 };
 
-PredistortArguments read_arguments(const CLI::App& command) {
+PredistortArguments read_predistort_arguments(const CLI::App& command) {
   refuse_leftovers(command, "usage: fabform predistort RESULT_DIR IMAGE OUT.png");
   PredistortArguments parsed;
   for (const char* name : {"RESULT_DIR", "IMAGE", "OUT"})
@@ -57,7 +57,7 @@ Command add_predistort_command(CLI::App& app) {
   command->add_option("OUT", "the print, a PNG in the blank's frame")->type_name("OUT.png");
   command->allow_extras();
   auto args = std::make_shared<PredistortArguments>();
-  return {command, [command, args] { *args = read_arguments(*command); }, [args] { return predistort_files(*args); }};
+  return {command, [command, args] { *args = read_predistort_arguments(*command); }, [args] { return predistort_files(*args); }};
 }
 
 }  // namespace fabform::cli

@@ -70,7 +70,7 @@ std::vector<SceneOverride> overrides_in_order(const CLI::App& command) {
   return overrides;
 }
 
-RunArguments read_arguments(const CLI::App& command) {
+RunArguments read_run_arguments(const CLI::App& command) {
   refuse_leftovers(command, "only one scene can be run at a time");
   RunArguments parsed;
   if (const std::string* v = given(command, "SCENE")) parsed.scene = *v;
@@ -284,7 +284,7 @@ Command add_run_command(CLI::App& app) {
   command->allow_extras();
   command->add_flag("--quiet", "no progress lines");
   auto args = std::make_shared<RunArguments>();
-  return {command, [command, args] { *args = read_arguments(*command); }, [args] { return run(*args); }};
+  return {command, [command, args] { *args = read_run_arguments(*command); }, [args] { return run(*args); }};
 }
 
 }  // namespace fabform::cli

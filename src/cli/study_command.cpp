@@ -52,7 +52,7 @@ int count_value(const std::string& flag, const std::string& text, int high) {
   return value;
 }
 
-StudyArguments read_arguments(const CLI::App& command) {
+StudyArguments read_study_arguments(const CLI::App& command) {
   refuse_leftovers(command, "only one study can be run at a time");
   StudyArguments parsed;
   if (const std::string* v = given(command, "STUDY")) parsed.study = *v;
@@ -160,7 +160,7 @@ Command add_study_command(CLI::App& app) {
   command->add_flag("--quiet", "no progress lines");
   command->allow_extras();
   auto args = std::make_shared<StudyArguments>();
-  return {command, [command, args] { *args = read_arguments(*command); }, [args] { return study(*args); }};
+  return {command, [command, args] { *args = read_study_arguments(*command); }, [args] { return study(*args); }};
 }
 
 }  // namespace fabform::cli

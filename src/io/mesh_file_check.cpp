@@ -15,19 +15,13 @@
 
 #include "fabform/error.hpp"
 #include "io/binary_stl.hpp"
+#include "io/file_extension.hpp"
 #include "io/text_lines.hpp"
 
 namespace fabform {
 namespace {
 
 using Count = unsigned long long;
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 std::string read_head(const std::string& path, std::size_t bytes) {
   std::ifstream in(path, std::ios::binary);

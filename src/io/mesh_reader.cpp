@@ -16,6 +16,7 @@
 
 #include "fabform/error.hpp"
 #include "io/binary_stl.hpp"
+#include "io/file_extension.hpp"
 #include "io/mesh_file_check.hpp"
 #include "io/obj_reader.hpp"
 #include "io/vrml_reader.hpp"
@@ -153,13 +154,6 @@ void drop_empty_meshes(aiScene* scene, Skipped* skipped) {
   }
   scene->mNumMeshes = kept;
   if (scene->mRootNode) renumber_meshes(scene->mRootNode, new_index);
-}
-
-// The file name's extension, lower case, with its dot ("" when none).
-std::string lower_extension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
 }
 
 // Reads the file, or the mended bytes check_mesh_file gave in its place (same format).

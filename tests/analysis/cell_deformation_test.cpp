@@ -10,7 +10,7 @@
 #include "fabform/analysis/cell_deformation.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::cell_deformation_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -82,4 +82,4 @@ TEST(CellDeformation, RefusesLockingAnglesOutsideAQuarterTurn) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::cell_deformation_test

@@ -13,7 +13,7 @@
 #include "fabform/solver/solve.hpp"
 #include "support/band_over_cylinder.hpp"
 
-namespace fabform {
+namespace fabform::contact_pressure_test {
 namespace {
 
 using test::kRadius_m;
@@ -61,4 +61,4 @@ TEST(ContactPressure, NoNodeInContactNoPressure) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::contact_pressure_test

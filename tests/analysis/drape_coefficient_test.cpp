@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace fabform {
+namespace fabform::drape_coefficient_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -358,4 +358,4 @@ TEST(DrapeCoefficient, BadAreasThrow) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::drape_coefficient_test

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace fabform {
+namespace fabform::drape_figures_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -85,4 +85,4 @@ TEST(FabricTriangles, CoverTheFacesOnce) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::drape_figures_test

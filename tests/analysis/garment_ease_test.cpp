@@ -12,7 +12,7 @@
 #include "fabform/solver/solve.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::garment_ease_test {
 namespace {
 
 // The cylinder is a 512-sided prism: its faces lie inside the circle by r (1 − cos(π/512)).
@@ -51,4 +51,4 @@ TEST(GarmentEase, NoneWithoutPanelsOrABody) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::garment_ease_test

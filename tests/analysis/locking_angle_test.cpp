@@ -5,7 +5,7 @@
 
 #include "fabform/analysis/locking_angle.hpp"
 
-namespace fabform {
+namespace fabform::locking_angle_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -31,4 +31,4 @@ TEST(LockingAngle, NoneForATableThatDoesNotStiffen) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::locking_angle_test

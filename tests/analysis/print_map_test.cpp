@@ -9,7 +9,7 @@
 #include "fabform/analysis/print_map.hpp"
 #include "support/print_round_trip.hpp"
 
-namespace fabform {
+namespace fabform::print_map_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -54,4 +54,4 @@ TEST(PrintMap, CheckerboardReturnsWithinOnePixel) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::print_map_test

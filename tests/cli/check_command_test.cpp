@@ -12,7 +12,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::check_command_test {
 namespace {
 
 using test::line_count;
@@ -116,4 +116,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& case_info) { return std::string(case_info.param.name); });
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::check_command_test

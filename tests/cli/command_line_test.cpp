@@ -6,7 +6,7 @@
 
 #include "support/cli.hpp"
 
-namespace fabform {
+namespace fabform::command_line_test {
 namespace {
 
 class CommandLine : public ::testing::TestWithParam<const char*> {
@@ -61,4 +61,4 @@ TEST(CommandLineTop, AnUnknownCommandOrNoneIsAUsageError) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::command_line_test

@@ -14,7 +14,7 @@
 #include "cli/commands.hpp"
 #include "fabform/error.hpp"
 
-namespace fabform::cli {
+namespace fabform::cli::guarded_test {
 namespace {
 
 struct Reported {
@@ -61,4 +61,4 @@ TEST(Guarded, AnythingElseIsABugSaidToBeOne) {
 }
 
 }  // namespace
-}  // namespace fabform::cli
+}  // namespace fabform::cli::guarded_test

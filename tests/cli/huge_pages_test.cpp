@@ -13,7 +13,7 @@
 
 #include "support/cli.hpp"
 
-namespace fabform::cli {
+namespace fabform::cli::huge_pages_test {
 namespace {
 
 TEST(HugePages, TunablesAddTheRequestOrKeepTheUsersChoice) {
@@ -75,4 +75,4 @@ TEST(HugePages, ALargeFabricRunsWithThemWhereTheKernelGivesThemOnRequest) {
 }
 
 }  // namespace
-}  // namespace fabform::cli
+}  // namespace fabform::cli::huge_pages_test

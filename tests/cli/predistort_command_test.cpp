@@ -13,7 +13,7 @@
 #include "support/print_round_trip.hpp"
 #include "support/shapes.hpp"
 
-namespace fabform {
+namespace fabform::predistort_command_test {
 namespace {
 
 using test::run_fabform;
@@ -80,4 +80,4 @@ TEST_F(PredistortCommand, BadInputIsOneLineNamingTheFileAndWritesNothing) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::predistort_command_test

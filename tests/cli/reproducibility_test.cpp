@@ -15,7 +15,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::reproducibility_test {
 namespace {
 
 using test::slurp;
@@ -111,4 +111,4 @@ INSTANTIATE_TEST_SUITE_P(EverySolver, Reproducible,
                          [](const auto& case_info) { return std::string(case_info.param.solver); });
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::reproducibility_test

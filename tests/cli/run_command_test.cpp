@@ -14,7 +14,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::run_command_test {
 namespace {
 
 using test::line_count;
@@ -347,4 +347,4 @@ TEST(Cli, UnknownCommandIsAUsageError) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::run_command_test

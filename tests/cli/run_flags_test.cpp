@@ -16,7 +16,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::run_flags_test {
 namespace {
 
 using test::Outcome;
@@ -210,4 +210,4 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& case_info) { return std::string(case_info.param.name); });
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::run_flags_test

@@ -14,7 +14,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::run_resume_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -207,4 +207,4 @@ TEST_F(ResumeRefusal, RunAtItsCapResumesToItsCap) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::run_resume_test

@@ -16,7 +16,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::study_command_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -145,4 +145,4 @@ TEST(StudyCommand, BadInputIsOneLineAndWritesNothing) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::study_command_test

@@ -13,7 +13,7 @@
 #include <set>
 #include <stdexcept>
 
-namespace fabform {
+namespace fabform::fabric_layout_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -314,4 +314,4 @@ INSTANTIATE_TEST_SUITE_P(Specs, InvalidCircle,
                                            triangular_rectangle()));
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::fabric_layout_test

@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace fabform {
+namespace fabform::fabric_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -230,4 +230,4 @@ TEST(Fabric, HugeDivisionsThrow) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::fabric_test

@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-namespace fabform {
+namespace fabform::initial_shape_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -264,4 +264,4 @@ TEST(InitialShape, ATubeNeedsThreeDivisionsRoundItAndARectangle) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::initial_shape_test

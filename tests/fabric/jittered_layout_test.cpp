@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-namespace fabform {
+namespace fabform::jittered_layout_test {
 namespace {
 
 FabricSpec jittered(int divisions, std::uint64_t seed, double jitter = kMaxJitter) {
@@ -122,4 +122,4 @@ TEST(JitteredLayout, RefusesAJitterOutsideItsBound) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::jittered_layout_test

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace fabform {
+namespace fabform::node_set_test {
 namespace {
 
 using Kind = NodeSetSpec::Kind;
@@ -208,4 +208,4 @@ TEST(NodeSet, RemoveLocked) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::node_set_test

@@ -14,7 +14,7 @@
 
 #include "fabform/angles.hpp"
 
-namespace fabform {
+namespace fabform::panel_layout_test {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
@@ -221,4 +221,4 @@ TEST(PanelLayout, ALatticeTooCoarseForTheOutlineIsRefused) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::panel_layout_test

@@ -13,7 +13,7 @@
 #include "fabform/material/material_csv.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::spring_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -206,4 +206,4 @@ TEST(Spring, NearlyCoincidentNodesStayFinite) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::spring_test

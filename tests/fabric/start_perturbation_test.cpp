@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <vector>
 
-namespace fabform {
+namespace fabform::start_perturbation_test {
 namespace {
 
 std::vector<Eigen::Vector3d> flat_start(int n) {
@@ -75,4 +75,4 @@ TEST(StartPerturbation, ZeroAmplitudeLeavesTheStart) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::start_perturbation_test

@@ -12,7 +12,7 @@
 #include "fuzz/fuzz_inputs.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::fuzz_replay_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -49,4 +49,4 @@ TEST(FuzzReplay, StudyFixtureAcceptsAValidStudy) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::fuzz_replay_test

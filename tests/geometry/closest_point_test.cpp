@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace fabform {
+namespace fabform::closest_point_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -291,4 +291,4 @@ TEST(SegmentPlaneCrossing, RandomCrossingsLieOnThePlane) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::closest_point_test

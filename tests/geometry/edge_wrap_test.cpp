@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-namespace fabform {
+namespace fabform::edge_wrap_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -113,4 +113,4 @@ TEST(EdgeWrap, ADegenerateEdgeWrapsNothing) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::edge_wrap_test

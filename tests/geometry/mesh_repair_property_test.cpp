@@ -28,7 +28,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::mesh_repair_property_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -186,4 +186,4 @@ TEST(MeshRepairProperties, TheWrittenFileIsWhatTheReportPromised) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::mesh_repair_property_test

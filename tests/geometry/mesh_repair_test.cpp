@@ -14,7 +14,7 @@
 #include "support/shapes.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::mesh_repair_test {
 namespace {
 
 using test::cube;
@@ -147,4 +147,4 @@ TEST(MeshRepair, ShippedMoldsNeedNothing) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::mesh_repair_test

@@ -16,7 +16,7 @@
 #include "support/shapes.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::mesh_report_test {
 namespace {
 
 using test::cube;
@@ -375,4 +375,4 @@ TEST(MeshReport, GarmentCodeTorso) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::mesh_report_test

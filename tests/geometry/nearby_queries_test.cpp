@@ -13,7 +13,7 @@
 #include "support/shapes.hpp"
 #include "support/threads_restored.hpp"
 
-namespace fabform {
+namespace fabform::nearby_queries_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -132,4 +132,4 @@ TEST(ForEachNearby, VisitsEveryPointOnceWithTheSameAnswersOnOneThreadOrTwo) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::nearby_queries_test

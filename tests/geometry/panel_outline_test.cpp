@@ -9,7 +9,7 @@
 
 #include "fabform/angles.hpp"
 
-namespace fabform {
+namespace fabform::panel_outline_test {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
@@ -154,4 +154,4 @@ TEST(PanelOutline, RefusesWhatIsNoSimpleLoop) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::panel_outline_test

@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-namespace fabform {
+namespace fabform::placement_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -175,4 +175,4 @@ TEST(Placement, InvalidReason) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::placement_test

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fabform {
+namespace fabform::point_grid_test {
 namespace {
 
 std::vector<int> brute_force_within(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& q,
@@ -81,4 +81,4 @@ TEST(PointGrid, DegenerateClouds) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::point_grid_test

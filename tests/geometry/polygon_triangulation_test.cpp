@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace fabform {
+namespace fabform::polygon_triangulation_test {
 namespace {
 
 using V2 = Eigen::Vector2d;
@@ -183,4 +183,4 @@ TEST(PolygonTriangulation, NonPlanarFacesAreCutInTheirBestFitPlane) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::polygon_triangulation_test

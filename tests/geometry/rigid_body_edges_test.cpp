@@ -10,7 +10,7 @@
 
 #include "fabform/angles.hpp"
 
-namespace fabform {
+namespace fabform::rigid_body_edges_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -52,4 +52,4 @@ TEST(RigidBodyConvexEdges, TheRidgeTurnsLessThanAskedOrIsAValley) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::rigid_body_edges_test

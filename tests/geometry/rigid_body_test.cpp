@@ -20,7 +20,7 @@
 #include "support/shapes.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::rigid_body_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -657,4 +657,4 @@ TEST(RigidBody, InvalidMeshesThrow) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::rigid_body_test

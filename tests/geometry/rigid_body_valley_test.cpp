@@ -17,7 +17,7 @@
 #include "support/shapes.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::rigid_body_valley_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -141,4 +141,4 @@ TEST(RigidBodyValley, FeaturetypeMatchesBruteForce) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::rigid_body_valley_test

@@ -9,7 +9,7 @@
 #include "fabform/geometry/rigid_body.hpp"
 #include "support/shapes.hpp"
 
-namespace fabform {
+namespace fabform::rigid_body_wrap_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -142,4 +142,4 @@ TEST(RigidBodyWrap, ALegOnTheTopFaceLeavesTheStringOverTheTopEdge) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::rigid_body_wrap_test

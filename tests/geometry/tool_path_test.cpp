@@ -5,7 +5,7 @@
 #include "fabform/geometry/placement.hpp"
 #include "fabform/geometry/tool_path.hpp"
 
-namespace fabform {
+namespace fabform::tool_path_test {
 namespace {
 
 TEST(ToolPath, AStraightPushAdvancesEvenly) {
@@ -42,4 +42,4 @@ TEST(ToolPath, BadPathsAreNamed) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::tool_path_test

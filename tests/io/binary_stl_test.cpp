@@ -18,7 +18,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::binary_stl_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -143,4 +143,4 @@ TEST(BinaryStl, TrailingBytesAreCountedNotRead) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::binary_stl_test

@@ -10,7 +10,7 @@
 #include "fabform/fabric/fabric.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::garmentcode_pattern_test {
 namespace {
 
 SewingPattern shipped(const std::string& name) {
@@ -98,4 +98,4 @@ TEST(GarmentCodeMeshing, ThePencilDressesDartsAreRefusedByName) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::garmentcode_pattern_test

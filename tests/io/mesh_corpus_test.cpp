@@ -17,7 +17,7 @@
 #include "fabform/io/mesh_reader.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::mesh_corpus_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -221,4 +221,4 @@ TEST(MeshCorpus, TablesCoverEveryFile) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::mesh_corpus_test

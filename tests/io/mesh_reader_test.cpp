@@ -20,7 +20,7 @@
 #include "fabform/error.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::mesh_reader_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -280,4 +280,4 @@ INSTANTIATE_TEST_SUITE_P(Formats, MeshReaderFormat,
                          });
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::mesh_reader_test

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fabform {
+namespace fabform::number_text_test {
 namespace {
 
 std::string streamed(double value, int precision) {
@@ -56,4 +56,4 @@ TEST(NumberText, PrecisionIsClampedToWhatADoubleHolds) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::number_text_test

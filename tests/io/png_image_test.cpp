@@ -8,7 +8,7 @@
 #include "fabform/io/png_image.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::png_image_test {
 namespace {
 
 TEST(PngImage, WrittenImageReadsBackPixelForPixel) {
@@ -67,4 +67,4 @@ TEST(PngImage, RefusesAHeaderClaimingBillionsOfBytes) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::png_image_test

@@ -8,7 +8,7 @@
 #include "fabform/io/sha256.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::sha256_test {
 namespace {
 
 TEST(Sha256, MatchesThePublishedExamples) {
@@ -46,4 +46,4 @@ TEST(Sha256, MissingFileIsAnInputErrorNamingIt) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::sha256_test

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace fabform {
+namespace fabform::text_lines_test {
 namespace {
 
 // The reference: `>>` on each line's text, '#' comments and "\" continuations as OBJ has them.
@@ -82,4 +82,4 @@ TEST(TextLines, StartsAtAnOffsetWithTheLineNumberGiven) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::text_lines_test

@@ -23,7 +23,7 @@
 #include "fabform/io/mesh_reader.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::vrml_reader_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -603,4 +603,4 @@ TEST(VrmlReader, ConcurrentReadsAgree) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::vrml_reader_test

@@ -19,7 +19,7 @@
 #include "fabform/io/obj_text.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::vrml_transform_test {
 namespace {
 
 using V3 = Eigen::Vector3d;
@@ -138,4 +138,4 @@ TEST(VrmlTransforms, RepairWriteAndReadBackChangeNothing) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::vrml_transform_test

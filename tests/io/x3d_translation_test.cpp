@@ -17,7 +17,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::x3d_translation_test {
 namespace {
 
 std::string data_file(const std::string& name) { return test::source_path("tests/data/vrml/" + name); }
@@ -161,4 +161,4 @@ TEST(X3dTranslation, IdentifiersAndLeftOutNodes) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::x3d_translation_test

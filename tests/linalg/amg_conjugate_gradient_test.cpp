@@ -10,7 +10,7 @@
 
 #include "support/grid_stiffness.hpp"
 
-namespace fabform {
+namespace fabform::amg_conjugate_gradient_test {
 namespace {
 
 using test::xyz_components;
@@ -93,4 +93,4 @@ TEST(AmgConjugateGradient, RefusesMisuse) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::amg_conjugate_gradient_test

@@ -11,7 +11,7 @@
 
 #include <Eigen/Dense>
 
-namespace fabform {
+namespace fabform::banded_ldlt_test {
 namespace {
 
 // A random symmetric matrix of the given band, its diagonal the row's absolute sum times
@@ -80,4 +80,4 @@ TEST(BandedLdlt, RefusesEntriesOutsideTheLowerBandAndMisuse) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::banded_ldlt_test

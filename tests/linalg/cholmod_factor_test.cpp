@@ -8,7 +8,7 @@
 
 #include "support/grid_stiffness.hpp"
 
-namespace fabform {
+namespace fabform::cholmod_factor_test {
 namespace {
 
 Eigen::VectorXd ramp(Eigen::Index n) {
@@ -96,4 +96,4 @@ TEST(CholmodFactor, BisectionSeparatesTheTwoSides) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::cholmod_factor_test

@@ -16,7 +16,7 @@
 #include "support/sparse_matrices.hpp"
 #include "support/threads_restored.hpp"
 
-namespace fabform {
+namespace fabform::galerkin_product_test {
 namespace {
 
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
@@ -90,4 +90,4 @@ TEST(GalerkinProduct, RefusesFactorsThatDoNotChain) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::galerkin_product_test

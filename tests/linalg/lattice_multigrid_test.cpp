@@ -19,7 +19,7 @@
 #include "linalg/amg_conjugate_gradient.hpp"
 #include "support/grid_stiffness.hpp"
 
-namespace fabform {
+namespace fabform::lattice_multigrid_test {
 namespace {
 
 struct System {
@@ -202,4 +202,4 @@ TEST(LatticeMultigrid, RefusesMisuse) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::lattice_multigrid_test

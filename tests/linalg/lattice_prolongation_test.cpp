@@ -14,7 +14,7 @@
 #include "support/sparse_matrices.hpp"
 #include "support/threads_restored.hpp"
 
-namespace fabform {
+namespace fabform::lattice_prolongation_test {
 namespace {
 
 // Where coarse index c sits among the fine indices of a lattice of n.
@@ -129,4 +129,4 @@ TEST(LatticeProlongation, RefusesADirectionPerUnknownMissing) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::lattice_prolongation_test

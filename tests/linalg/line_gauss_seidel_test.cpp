@@ -19,7 +19,7 @@
 #include "support/grid_stiffness.hpp"
 #include "support/threads_restored.hpp"
 
-namespace fabform {
+namespace fabform::line_gauss_seidel_test {
 namespace {
 
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
@@ -174,4 +174,4 @@ TEST(LineGaussSeidel, RefusesPlacesThatDoNotFit) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::line_gauss_seidel_test

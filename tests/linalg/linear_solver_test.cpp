@@ -9,7 +9,7 @@
 
 #include "support/grid_stiffness.hpp"
 
-namespace fabform {
+namespace fabform::linear_solver_test {
 namespace {
 
 TEST(LinearSolver, NamesRoundTrip) {
@@ -83,4 +83,4 @@ TEST(LinearSolver, CholeskyFindsAnIndefiniteMatrix) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::linear_solver_test

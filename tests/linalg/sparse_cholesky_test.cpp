@@ -8,7 +8,7 @@
 #include "fabform/thread_count.hpp"
 #include "support/grid_stiffness.hpp"
 
-namespace fabform {
+namespace fabform::sparse_cholesky_test {
 namespace {
 
 // Newton splits from 300 000 unknowns; these tests from 2000, to stay small.
@@ -65,4 +65,4 @@ TEST(SparseCholesky, AnUncompressedMatrixIsFactorisedAsItsCompressedCopy) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::sparse_cholesky_test

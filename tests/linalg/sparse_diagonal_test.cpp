@@ -15,7 +15,7 @@
 #include "support/sparse_matrices.hpp"
 #include "support/threads_restored.hpp"
 
-namespace fabform {
+namespace fabform::sparse_diagonal_test {
 namespace {
 
 using ColumnMatrix = Eigen::SparseMatrix<double>;
@@ -124,4 +124,4 @@ TEST(SparseDiagonal, SumInOrderIsEigensSparseDiagonalSum) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::sparse_diagonal_test

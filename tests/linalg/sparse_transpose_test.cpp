@@ -17,7 +17,7 @@
 #include "support/sparse_matrices.hpp"
 #include "support/threads_restored.hpp"
 
-namespace fabform {
+namespace fabform::sparse_transpose_test {
 namespace {
 
 using test::same_bits;
@@ -116,4 +116,4 @@ TEST(WholeSymmetric, RefusesAMatrixThatIsNotSquare) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::sparse_transpose_test

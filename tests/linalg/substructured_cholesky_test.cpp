@@ -9,7 +9,7 @@
 
 #include "support/grid_stiffness.hpp"
 
-namespace fabform {
+namespace fabform::substructured_cholesky_test {
 namespace {
 
 Eigen::VectorXd ramp(Eigen::Index n) {
@@ -86,4 +86,4 @@ TEST(SubstructuredCholesky, ReportsAMatrixThatIsNotPositiveDefinite) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::substructured_cholesky_test

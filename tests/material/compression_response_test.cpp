@@ -14,7 +14,7 @@
 #include "fabform/material/tension_table.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::compression_response_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -191,4 +191,4 @@ TEST(CompressionResponse, MeasuredCompressionIsKept) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::compression_response_test

@@ -16,7 +16,7 @@
 #include "fabform/error.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::material_csv_test {
 namespace {
 
 const std::string kSource = "table.csv";
@@ -316,4 +316,4 @@ TEST(MaterialCsv, ShippedTablesMatchReadmeSummary) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::material_csv_test

@@ -14,7 +14,7 @@
 #include "fabform/material/material_csv.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::tension_table_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -275,4 +275,4 @@ INSTANTIATE_TEST_SUITE_P(
         InvalidCase{"tension-only tiny value", {{0.0, 1e-300}, {0.1, 1.0}}}));
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::tension_table_test

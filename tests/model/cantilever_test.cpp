@@ -16,7 +16,7 @@
 #include "fabform/solver/solve.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::cantilever_test {
 namespace {
 
 constexpr double kClamp_m = 0.005;     // the clamped rows: x ≤ 5 mm, slope 0 at the clamp's edge
@@ -85,4 +85,4 @@ TEST(Cantilever, BendingLengthPutsTheTipOnTheStandardsLine) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::cantilever_test

@@ -8,7 +8,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::clamp_frame_test {
 namespace {
 
 constexpr double kCreep_m = 1e-4;
@@ -97,4 +97,4 @@ TEST(ClampOptions, BadValuesAreNamed) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::clamp_frame_test

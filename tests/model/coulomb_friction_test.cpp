@@ -10,7 +10,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::coulomb_friction_test {
 namespace {
 
 constexpr double kCreep_m = 1e-4;
@@ -91,4 +91,4 @@ TEST(CoulombFriction, CreepIsAFractionOfTheMeanSpringLength) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::coulomb_friction_test

@@ -14,7 +14,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/shapes.hpp"
 
-namespace fabform {
+namespace fabform::edge_contact_test {
 namespace {
 
 // An edge along y from (0, 0, 0) to (0, 1, 0) whose faces turn by `angle` (radians) between them,
@@ -169,4 +169,4 @@ TEST(EdgeContact, OnlyNewtonCarriesIt) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::edge_contact_test

@@ -9,7 +9,7 @@
 #include "fabform/model/model.hpp"
 #include "support/shapes.hpp"
 
-namespace fabform {
+namespace fabform::equilibrium_test {
 namespace {
 
 TEST(UnbalancedForce, FreeNodeKeepsAllOfR) {
@@ -192,4 +192,4 @@ TEST(MeasureEquilibrium, NonFiniteNodeGivesNaN) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::equilibrium_test

@@ -7,7 +7,7 @@
 #include "fabform/model/force_scale.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::force_scale_test {
 namespace {
 
 Model grid_of(const TensionTable& warp, const TensionTable& weft) {
@@ -39,4 +39,4 @@ TEST(ForceScale, ATableThatStartsFlatHasNone) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::force_scale_test

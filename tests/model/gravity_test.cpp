@@ -11,7 +11,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::gravity_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -91,4 +91,4 @@ TEST(Gravity, WarnsWhenTheToleranceIsNotWellBelowTheLightestNodesWeight) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::gravity_test

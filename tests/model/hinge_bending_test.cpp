@@ -17,7 +17,7 @@
 #include "support/flat_models.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::hinge_bending_test {
 namespace {
 
 Fabric hinged(FabricSpec spec) {
@@ -176,4 +176,4 @@ TEST(HingeBending, TermAgreesWithItsEnergyByFiniteDifferences) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::hinge_bending_test

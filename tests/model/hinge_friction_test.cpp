@@ -17,7 +17,7 @@
 #include "support/flat_models.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::hinge_friction_test {
 namespace {
 
 Model hinged_model(FabricSpec spec) {
@@ -113,4 +113,4 @@ TEST(HingeFriction, BoundCoversTheStiffnessAtAnyState) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::hinge_friction_test

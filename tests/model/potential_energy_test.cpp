@@ -16,7 +16,7 @@
 #include "fabform/model/spring_term.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::potential_energy_test {
 namespace {
 
 // A free fabric of a shipped material, weighed with its density.
@@ -143,4 +143,4 @@ TEST(PotentialEnergy, WithoutLoadsItIsTheStretchEnergy) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::potential_energy_test

@@ -13,7 +13,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::pressure_test {
 namespace {
 
 constexpr double kPressure_Pa = 2500.0;
@@ -123,4 +123,4 @@ TEST(PressureLoad, PushesAFlatFabricDownByItsArea) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::pressure_test

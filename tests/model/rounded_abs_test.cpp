@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fabform {
+namespace fabform::rounded_abs_test {
 namespace {
 
 TEST(RoundedAbs, IsAbsLessHalfTheWidthBeyondItAndQuadraticInside) {
@@ -30,4 +30,4 @@ TEST(RoundedAbs, SlopeAndCurvatureAreItsDerivatives) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::rounded_abs_test

@@ -14,7 +14,7 @@
 #include "support/flat_models.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::seam_test {
 namespace {
 
 Fabric rectangle(double width, double height, int along_x, int along_y) {
@@ -186,4 +186,4 @@ TEST(SeamTerm, NodesSewnNodeForNodeAreOnePoint) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::seam_test

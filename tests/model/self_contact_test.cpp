@@ -17,7 +17,7 @@
 #include "support/flat_models.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::self_contact_test {
 namespace {
 
 constexpr double kThickness = 1e-3;
@@ -166,4 +166,4 @@ TEST(SelfContact, ABrokenStateHasNoPairs) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::self_contact_test

@@ -15,7 +15,7 @@
 #include "support/flat_models.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::shear_friction_test {
 namespace {
 
 Model model_of(const FabricSpec& spec) { return test::free_model(Fabric(spec)); }
@@ -130,4 +130,4 @@ TEST(ShearFriction, OnOneCellTheStiffnessIsTheHessianWhereTheLeftOutDiagonalMove
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::shear_friction_test

@@ -9,7 +9,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/shapes.hpp"
 
-namespace fabform {
+namespace fabform::spring_cuts_test {
 namespace {
 
 // A strip of 4 springs, 1 cm each, along x at height z; the cube [0.015, 0.025]³ + (0, -0.02, -0.02)
@@ -71,4 +71,4 @@ TEST(SpringCuts, AChordOfACurveIsACutOnlyWhenTheCurveIsSharpForTheMesh) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::spring_cuts_test

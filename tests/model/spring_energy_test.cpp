@@ -14,7 +14,7 @@
 #include "fabform/model/model.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::spring_energy_test {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -173,4 +173,4 @@ TEST(SpringEnergy, MinusTotalGradientIsTheNodeForce) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::spring_energy_test

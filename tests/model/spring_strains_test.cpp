@@ -8,7 +8,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/rotated_fabric.hpp"
 
-namespace fabform {
+namespace fabform::spring_strains_test {
 namespace {
 
 // A fabric laid out at rest has no deformation, although its lengths, computed from turned
@@ -39,4 +39,4 @@ TEST(DeformationSum, CountsADeformationAboveRounding) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::spring_strains_test

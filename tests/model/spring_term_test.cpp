@@ -11,7 +11,7 @@
 #include "support/term_checks.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::spring_term_test {
 namespace {
 
 // A free fabric of the shipped swimwear knit with shear and bend springs and their tables.
@@ -85,4 +85,4 @@ TEST(SpringTerm, SaysWhatItModels) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::spring_term_test

@@ -6,7 +6,7 @@
 
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::table_range_test {
 namespace {
 
 Model flat_fabric() {
@@ -54,4 +54,4 @@ TEST(TableRange, TablesWithACompressionBranchAreNotCalledDegenerate) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::table_range_test

@@ -13,7 +13,7 @@
 #include "fabform/model/model.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::wind_test {
 namespace {
 
 FabricSpec circle(FabricSpec::Mesh mesh) {
@@ -196,4 +196,4 @@ TEST(WindLoad, IsTheWindAtRestWithItsDragForDynamicAlone) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::wind_test

@@ -14,7 +14,7 @@
 #include "support/shapes.hpp"
 #include "support/term_checks.hpp"
 
-namespace fabform {
+namespace fabform::wrapped_spring_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -119,4 +119,4 @@ TEST(WrappedSpring, TheStretchTermOverAnEdgePassesEveryTermCheck) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::wrapped_spring_test

@@ -12,7 +12,7 @@
 #include "support/cli.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::atomic_file_test {
 namespace {
 
 std::string refusal(void (*write)(const std::string&, const std::string&), const std::string& path) {
@@ -65,4 +65,4 @@ TEST(AtomicFile, AFailedRenameLeavesWhatWasThere) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::atomic_file_test

@@ -11,7 +11,7 @@
 #include "fabform/output/checkpoint.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::checkpoint_test {
 namespace {
 
 SolverState sample_state(bool with_velocity) {
@@ -124,4 +124,4 @@ TEST(Checkpoint, MissingFileSaysThereIsNothingToResume) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::checkpoint_test

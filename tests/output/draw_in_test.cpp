@@ -8,7 +8,7 @@
 #include "fabform/output/draw_in.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::draw_in_test {
 namespace {
 
 TEST(DrawIn, AUniformShrinkReadsItsMoveAtEveryEdgeNode) {
@@ -65,4 +65,4 @@ TEST(DrawIn, ACirclesRimReadsItsRadialMove) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::draw_in_test

@@ -8,7 +8,7 @@
 
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::fabric_figures_test {
 namespace {
 
 // Relative to the areas here (1e-2 m²): rounding of a few hundred cell sums.
@@ -116,4 +116,4 @@ TEST(FabricFigures, HistogramEdgesAreRoundAndCoverEveryCell) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::fabric_figures_test

@@ -15,7 +15,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::result_writer_test {
 namespace {
 
 // The shipped Cusick scene, coarse, its fabric at `x`, written as a run with `summary` would be.
@@ -67,4 +67,4 @@ TEST(ResultDrape, ANegativeCoefficientIsMarked) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::result_writer_test

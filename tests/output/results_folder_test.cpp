@@ -13,7 +13,7 @@
 #include "support/temp_dir.hpp"
 #include "support/threads_restored.hpp"
 
-namespace fabform {
+namespace fabform::results_folder_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -129,4 +129,4 @@ TEST(ResultsFolder, PlaceUnderAFileIsRefusedBeforeTheRun) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::results_folder_test

@@ -10,7 +10,7 @@
 #include "fabform/scene/scene_toml.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::run_figures_test {
 namespace {
 
 // A coarse shipped scene at its start, as a run would record it.
@@ -53,4 +53,4 @@ TEST(RunFigures, JudgeTheCellsByTheScenesLockingAngle) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::run_figures_test

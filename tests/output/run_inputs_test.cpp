@@ -10,7 +10,7 @@
 #include "support/cli.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::run_inputs_test {
 namespace {
 
 class RunInputsTest : public ::testing::Test {
@@ -96,4 +96,4 @@ TEST_F(RunInputsTest, ResultJsonWithoutInputsIsRefusedNamingIt) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::run_inputs_test

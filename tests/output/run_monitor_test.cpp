@@ -12,7 +12,7 @@
 
 #include "fabform/error.hpp"
 
-namespace fabform {
+namespace fabform::run_monitor_test {
 namespace {
 
 struct Published {
@@ -124,4 +124,4 @@ TEST_F(RunMonitorTest, NoGoodStateBeforeTheFirstFiniteResidual) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::run_monitor_test

@@ -17,7 +17,7 @@
 #include "fabform/solver/solve.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::drape_scenes_test {
 namespace {
 
 struct Draped {
@@ -175,4 +175,4 @@ TEST(PinDrape, DynamicsNeverGainsEnergy) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::drape_scenes_test

@@ -13,7 +13,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::garment_toml_test {
 namespace {
 
 // A 20 × 10 cm knit hung between its two short sides, as one panel or as two sewn in the middle.
@@ -288,4 +288,4 @@ TEST(GarmentScene, BadPatternsAreNamedByTheirPath) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::garment_toml_test

@@ -16,7 +16,7 @@
 #include "support/temp_dir.hpp"
 #include "support/terms.hpp"
 
-namespace fabform {
+namespace fabform::lab_units_test {
 namespace {
 
 class LabUnits : public ::testing::Test {
@@ -326,4 +326,4 @@ TEST_F(LabUnits, HysteresisNoFabricHasIsWarnedWithTheRange) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::lab_units_test

@@ -9,7 +9,7 @@
 #include "fabform/error.hpp"
 #include "fabform/fabric/fabric.hpp"
 
-namespace fabform {
+namespace fabform::memory_budget_test {
 namespace {
 
 FabricSpec rectangle(int warp, int weft) {
@@ -82,4 +82,4 @@ TEST(MemoryBudget, AcceptsWhatFits) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::memory_budget_test

@@ -17,7 +17,7 @@
 #include "support/scene_models.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::model_builder_test {
 namespace {
 
 // A 10 × 10 cm fabric lifted 2 cm over a 3 cm sphere whose top reaches 1 cm.
@@ -270,4 +270,4 @@ TEST_F(ModelBuilder, OneFileStatingTheDensityIsEnough) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::model_builder_test

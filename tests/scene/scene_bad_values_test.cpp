@@ -24,7 +24,7 @@
 #include "fabform/scene/scene_toml.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::scene_bad_values_test {
 namespace {
 
 // ---------------------------------------------------------------------------------------------
@@ -1097,4 +1097,4 @@ TEST(SceneBadValueTable, ListsEveryKeyTheParserKnows) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::scene_bad_values_test

@@ -6,7 +6,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::scene_toml_test {
 namespace {
 
 // A minimal valid scene; tests append or replace lines to break it.
@@ -392,4 +392,4 @@ TEST(ParseOverride, SplitsAtTheFirstEquals) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::scene_toml_test

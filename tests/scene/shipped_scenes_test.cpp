@@ -23,7 +23,7 @@
 #include "fabform/solver/solve.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::shipped_scenes_test {
 namespace {
 
 
@@ -285,4 +285,4 @@ TEST(ShippedFold, ThePliesRestApartAndCrossWithoutSelfContact) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::shipped_scenes_test

@@ -16,7 +16,7 @@
 #include "support/band_over_cylinder.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::capstan_test {
 namespace {
 
 using Capstan = test::BandOverCylinder;
@@ -79,4 +79,4 @@ TEST(Capstan, FrictionlessBandCarriesOneTension) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::capstan_test

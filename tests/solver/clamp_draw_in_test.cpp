@@ -12,7 +12,7 @@
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::clamp_draw_in_test {
 namespace {
 
 constexpr double kLength_m = 0.2;
@@ -106,4 +106,4 @@ TEST(ClampDrawIn, APullBelowTwiceMuFDrawsNothingIn) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::clamp_draw_in_test

@@ -16,7 +16,7 @@
 #include "support/fabric_over_sphere.hpp"
 #include "support/terms.hpp"
 
-namespace fabform {
+namespace fabform::dynamic_test {
 namespace {
 
 using test::clamped_fabric;
@@ -340,4 +340,4 @@ TEST(DynamicWind, PartlyHeldNodeComesToRest) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::dynamic_test

@@ -12,7 +12,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/fabric_over_sphere.hpp"
 
-namespace fabform {
+namespace fabform::extremes_test {
 namespace {
 
 using test::clamped_fabric;
@@ -171,4 +171,4 @@ TEST(ExtremesRelax, StepDivisorC) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::extremes_test

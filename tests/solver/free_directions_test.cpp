@@ -11,7 +11,7 @@
 #include "solver/reduced_hessian.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::free_directions_test {
 namespace {
 
 // Every third interior node presses on a body whose normal leans off the axes (so the tangent
@@ -101,4 +101,4 @@ TEST(FreeDirections, EmptySlotsCarryNothing) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::free_directions_test

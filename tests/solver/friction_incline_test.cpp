@@ -17,7 +17,7 @@
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::friction_incline_test {
 namespace {
 
 constexpr double kMu = 0.4;
@@ -150,4 +150,4 @@ TEST(FrictionIncline, NewtonRestsWhereItHoldsAndFindsNoRestWhereItSlides) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::friction_incline_test

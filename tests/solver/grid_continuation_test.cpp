@@ -14,7 +14,7 @@
 #include "fabform/solver/newton.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::grid_continuation_test {
 namespace {
 
 Fabric rectangle(int divisions_warp, int divisions_weft) {
@@ -147,4 +147,4 @@ TEST(GridContinuation, ScenesItCannotContinueAreRefused) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::grid_continuation_test

@@ -14,7 +14,7 @@
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::hanging_fabric_test {
 namespace {
 
 constexpr double kDensity_kg_m2 = 0.2;
@@ -82,4 +82,4 @@ INSTANTIATE_TEST_SUITE_P(EverySolver, HangingFabric, ::testing::Values("relax", 
                          [](const auto& case_info) { return case_info.param; });
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::hanging_fabric_test

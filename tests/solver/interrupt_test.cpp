@@ -13,7 +13,7 @@
 #include "support/fabric_over_sphere.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::interrupt_test {
 namespace {
 
 SolverSpec spec_for(const std::string& solver) {
@@ -105,4 +105,4 @@ TEST(BeginSummary, RefusesAnotherSolversRun) {
 INSTANTIATE_TEST_SUITE_P(EverySolver, Interrupt, ::testing::Values("relax", "dynamic", "newton"));
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::interrupt_test

@@ -22,7 +22,7 @@
 #include "support/shapes.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::load_steps_test {
 namespace {
 
 constexpr double kHalfSpan_m = 0.1;
@@ -356,4 +356,4 @@ TEST(LoadSteps, NoCheckpointIsWrittenInsideACut) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::load_steps_test

@@ -18,7 +18,7 @@
 #include "support/fabric_over_sphere.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::newton_test {
 namespace {
 
 using test::clamped_fabric;
@@ -271,4 +271,4 @@ TEST(Newton, NonFiniteStartIsNumericalFailure) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::newton_test

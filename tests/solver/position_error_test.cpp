@@ -19,7 +19,7 @@
 #include "support/clamped_fabric.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::position_error_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -301,4 +301,4 @@ TEST(PositionError, NegativeDistanceToleranceIsRefused) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::position_error_test

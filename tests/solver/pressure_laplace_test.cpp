@@ -12,7 +12,7 @@
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::pressure_laplace_test {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -64,4 +64,4 @@ TEST(PressureLaplace, MidSpanTensionIsPressureTimesRadius) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::pressure_laplace_test

@@ -15,7 +15,7 @@
 #include "support/sparse_matrices.hpp"
 #include "support/threads_restored.hpp"
 
-namespace fabform {
+namespace fabform::reduced_hessian_test {
 namespace {
 
 Model bent_hinged_fabric(int divisions = 4) {
@@ -137,4 +137,4 @@ TEST(ReducedHessian, SameBitsOnAnyThreadCount) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::reduced_hessian_test

@@ -13,7 +13,7 @@
 #include "support/rotated_fabric.hpp"
 #include "support/shapes.hpp"
 
-namespace fabform {
+namespace fabform::relax_test {
 namespace {
 
 using test::clamped_fabric;
@@ -207,4 +207,4 @@ TEST_P(RelaxC, Converges) {
 INSTANTIATE_TEST_SUITE_P(SeedConstant, RelaxC, ::testing::Values(1.01, 1.5, 2.0, 10.0, 100.0));
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::relax_test

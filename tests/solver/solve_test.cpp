@@ -10,7 +10,7 @@
 #include "fabform/model/wind.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::solve_test {
 namespace {
 
 TEST(Solve, RunsTheNamedSolver) {
@@ -46,4 +46,4 @@ TEST(Solve, WindIsForDynamicOnly) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::solve_test

@@ -15,7 +15,7 @@
 
 #include "fabform/solver/interrupt.hpp"
 
-namespace fabform {
+namespace fabform::solver_loop_test {
 namespace {
 
 const auto kNow = [] { return std::chrono::steady_clock::now(); };
@@ -177,4 +177,4 @@ TEST(RateEstimatedSteps, HaveNoEstimateBeforeAMove) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::solver_loop_test

@@ -10,7 +10,7 @@
 
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::solver_registry_test {
 namespace {
 
 TEST(SolverRegistry, ListsTheSolversInTheirOrder) {
@@ -83,4 +83,4 @@ TEST(SolverRegistry, NamesHowEachEstimatesItsDistanceFromTheRest) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::solver_registry_test

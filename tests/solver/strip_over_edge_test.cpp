@@ -12,7 +12,7 @@
 #include "support/clamped_fabric.hpp"
 #include "support/shapes.hpp"
 
-namespace fabform {
+namespace fabform::strip_over_edge_test {
 namespace {
 
 using V = Eigen::Vector3d;
@@ -108,4 +108,4 @@ TEST(StripOverEdge, DynamicRefusesAWrappedSpring) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::strip_over_edge_test

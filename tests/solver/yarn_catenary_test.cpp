@@ -14,7 +14,7 @@
 #include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 
-namespace fabform {
+namespace fabform::yarn_catenary_test {
 namespace {
 
 constexpr double kLength_m = 0.1;
@@ -124,4 +124,4 @@ TEST(YarnProvot, StretchLimitHoldsASoftYarnWithinTenPercent) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::yarn_catenary_test

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fabform {
+namespace fabform::slurm_backend_test {
 namespace {
 
 TEST(SlurmBackend, ScriptMapsOptionsToSbatchFlagsAndRunsEachCase) {
@@ -27,4 +27,4 @@ TEST(SlurmBackend, ScriptMapsOptionsToSbatchFlagsAndRunsEachCase) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::slurm_backend_test

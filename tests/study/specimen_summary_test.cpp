@@ -12,7 +12,7 @@
 #include "fabform/study/study_case.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::specimen_summary_test {
 namespace {
 
 void write_result(test::TempDir& dir, int index, bool converged, int folds, double coefficient) {
@@ -73,4 +73,4 @@ TEST(SpecimenSummary, TheDeviationIsTheSampleOneOfManyReadings) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::specimen_summary_test

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <set>
 
-namespace fabform {
+namespace fabform::study_cases_test {
 namespace {
 
 StudyValue value(const std::string& key, const std::string& text) { return {key, text, text, {}}; }
@@ -62,4 +62,4 @@ TEST(StudyCases, SpecimensRepeatEveryCaseWithSeedsOneToN) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::study_cases_test

@@ -7,7 +7,7 @@
 #include "support/temp_dir.hpp"
 #include "test_paths.hpp"
 
-namespace fabform {
+namespace fabform::study_file_test {
 namespace {
 
 std::string study_text(const std::string& body, const std::string& figures = "[\"residual_N\"]") {
@@ -150,4 +150,4 @@ TEST(StudyFile, SpecimensThatCouldNotDifferOrWhoseSeedIsSetAreRefused) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::study_file_test

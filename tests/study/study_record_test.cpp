@@ -7,7 +7,7 @@
 #include "fabform/study/study_cases.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::study_record_test {
 namespace {
 
 StudySpec two_cases_of_two_specimens() {
@@ -63,4 +63,4 @@ TEST(StudyRecord, SpecimenSeedsOutOfPlaceAreRefused) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::study_record_test

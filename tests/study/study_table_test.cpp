@@ -11,7 +11,7 @@
 #include "support/cli.hpp"
 #include "support/temp_dir.hpp"
 
-namespace fabform {
+namespace fabform::study_table_test {
 namespace {
 
 TEST(StudyTable, RowsComeFromResultsAndEndings) {
@@ -34,4 +34,4 @@ TEST(StudyTable, RowsComeFromResultsAndEndings) {
 }
 
 }  // namespace
-}  // namespace fabform
+}  // namespace fabform::study_table_test
