@@ -20,6 +20,10 @@ if(FABFORM_SANITIZE)
   if(FABFORM_SANITIZE MATCHES "undefined")
     list(APPEND _fabform_sanitize_flags -fno-sanitize-recover=undefined)
   endif()
+  # GCC's manual: "sanitizers tend to increase the rate of false positive warnings, most notably
+  # those around -Wmaybe-uninitialized" (here std::regex's, inlined into the VRML reader); the
+  # normal build keeps the warning.
+  list(APPEND _fabform_sanitize_flags -Wno-maybe-uninitialized)
   add_compile_options(${_fabform_sanitize_flags})
   # CGAL's arrangements (the drape shadow's Boolean union) keep their faces as DCEL records and
   # hand them out through iterators that downcast them to the Arrangement's Face type, an object
