@@ -9,11 +9,11 @@ could not measure: a size that does not finish within --timeout is reported as o
 What it does: for each N in --sizes (nodes a side; default 101,201,401,1001) it runs
 `fabform run scenes/dome.toml --set fabric.divisions=[N-1,N-1] --solver newton --tol 1e-6`
 (with `--set solver.linear_solver=` --linear-solver: auto, cholesky or multigrid, and
-`--set solver.continuation_levels=` --continuation when it is not 0) once for each thread count
+`--set solver.continuation_levels=` --continuation unless it is `auto`, fabform's own choice) once for each thread count
 in --threads, each up to --runs times (again only while the size's runs so far and one more fit
 in --timeout: several runs where affordable, medians), and records per N and thread count:
 wall seconds (result.json's wall_seconds, the whole run) and solve seconds (solve_seconds, plus
-the coarser grids' with --continuation), medians over the runs; iterations (on the scene's own
+the coarser grids' where there are any), medians over the runs; iterations (on the scene's own
 grid); peak memory (the largest resident size of the runs, from wait4's rusage); and
 result.json's position_error_m, the estimate of the largest node distance from the exact rest.
 Newton's path near the rest is sensitive to rounding-level differences (which nodes touch the
@@ -23,7 +23,7 @@ moved by a seeded imperfection (`--set initial.perturbation_m=` --perturbation, 
 `initial.seed=S`), and reports the median iterations with their range over the seeds.
 Where N <= --reference-max it also solves to --reference-tol (the reference) and measures the
 largest node distance of the first run from it, the figure the estimate is checked against
-(first thread count only; with --continuation the reference's coarser rests differ from the
+(first thread count only; with continuation the reference's coarser rests differ from the
 run's, so the two can settle on neighbouring rests of the faceted dome, and the distance is then
 that of the rests, not the estimate's error).
 Then, for each thread count: the exponent p of time against nodes, t ~ nodes^p, fitted by least
@@ -113,8 +113,9 @@ def parse_args(argv: list) -> argparse.Namespace:
     p.add_argument("--timeout", type=float, default=600.0, help="seconds for each size's runs (600)")
     p.add_argument("--runs", type=int, default=3, help="runs a size at most, for the medians (3)")
     p.add_argument("--threads", default="1", help="thread counts, each run in turn, e.g. 1,2 (1)")
-    p.add_argument("--continuation", type=int, default=0,
-                   help="newton's grid continuation, solver.continuation_levels, 0 ... 10 (0: none)")
+    p.add_argument("--continuation", default="auto",
+                   help="newton's grid continuation, solver.continuation_levels: 0 (none) ... 10, "
+                        "or auto, fabform's choice (auto)")
     p.add_argument("--seeds", default="",
                    help="one run a size per seed, each start with a seeded imperfection, e.g. 1,2,3 (none)")
     p.add_argument("--perturbation", type=float, default=1e-6,
@@ -136,8 +137,9 @@ def parse_args(argv: list) -> argparse.Namespace:
     args.seeds = parse_seeds(args.seeds)
     if not (math.isfinite(args.perturbation) and args.perturbation > 0):
         fail("--perturbation: must be a positive distance in metres")
-    if not 0 <= args.continuation <= 10:
-        fail("--continuation: must be 0 ... 10")
+    if args.continuation != "auto":
+        if not (args.continuation.isdigit() and 0 <= int(args.continuation) <= 10):
+            fail("--continuation: must be 0 ... 10 or auto")
     if args.baseline and not pathlib.Path(args.baseline).is_file():
         fail(f"--baseline: {args.baseline}: no such file")
     if args.linear_solver not in LINEAR_SOLVERS:
@@ -203,7 +205,7 @@ def builds(args, out: pathlib.Path = None) -> list:
     """This build once per thread count, then the baseline (if any) with the first; with `out`,
     the baseline's scene is written there."""
     sets = [f"solver.linear_solver={args.linear_solver}"]
-    if args.continuation:
+    if args.continuation != "auto":
         sets.append(f"solver.continuation_levels={args.continuation}")
     this = [Build("this", str(bench.FABFORM), t, tuple(sets)) for t in args.threads]
     if not args.baseline:
