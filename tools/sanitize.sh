@@ -12,7 +12,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # -O1 -g1: AddressSanitizer's recommended optimisation, and line tables for its stack traces;
 # it compiles in about 60 % of -O2 -g's time (CGAL's arrangement file: 80 s against 178 s).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-      -DFABFORM_SANITIZE=address,undefined -DCMAKE_UNITY_BUILD=ON >/dev/null
+      -DFABFORM_SANITIZE=address,undefined -DCMAKE_UNITY_BUILD=ON \
+      -DFABFORM_TEST_PER_PROCESS=ON >/dev/null
 cmake --build build-asan -j"$(nproc)" --target fabform_tests
 
 # Leaks are checked at every process exit; tools/lsan.supp holds what third-party libraries keep
