@@ -17,7 +17,7 @@ if(FABFORM_SANITIZE)
   endif()
   set(_fabform_sanitize_flags -fsanitize=${FABFORM_SANITIZE} -fno-omit-frame-pointer)
   # Undefined behaviour ends the process (and fails the test) instead of printing and going on.
-  # Not its null and alignment checks, which instrument every reference Eigen binds and took a third
+  # UBSan's null and alignment checks are left out: they instrument every reference Eigen binds, a third
   # of the sanitized build's compile time (tests/model/spring_energy_test.cpp: 26.8 s with them,
   # 17.4 s without): a null pointer dereferenced still ends in a SEGV that AddressSanitizer
   # reports with its stack, the parsers read bytes with memcpy, and the fuzz targets
