@@ -22,11 +22,7 @@ std::string DynamicOptions::invalid_reason(std::string* field) const {
     if (field) *field = name;
     return std::string(why);
   };
-  if (!(std::isfinite(tolerance_N) && tolerance_N > 0.0))
-    return bad("tolerance_N", "must be a positive, finite force");
-  if (!(std::isfinite(tolerance_m) && tolerance_m >= 0.0))
-    return bad("tolerance_m", "must be a positive, finite distance (or 0: none)");
-  if (max_iterations < 0) return bad("max_iterations", "must not be negative");
+  if (std::string why = stop_settings(*this).invalid_reason(field); !why.empty()) return why;
   if (!(std::isfinite(areal_density_kg_m2) && areal_density_kg_m2 > 0.0))
     return bad("areal_density_kg_m2", "must be a positive, finite density");
   if (damping && !(*damping >= 0.0 && *damping < 1.0)) return bad("damping", "must be in [0, 1)");

@@ -27,11 +27,7 @@ std::string NewtonOptions::invalid_reason(std::string* field) const {
     if (field) *field = name;
     return std::string(why);
   };
-  if (!(std::isfinite(tolerance_N) && tolerance_N > 0.0))
-    return bad("tolerance_N", "must be a positive, finite force");
-  if (!(std::isfinite(tolerance_m) && tolerance_m >= 0.0))
-    return bad("tolerance_m", "must be a positive, finite distance (or 0: none)");
-  if (max_iterations < 0) return bad("max_iterations", "must not be negative");
+  if (std::string why = stop_settings(*this).invalid_reason(field); !why.empty()) return why;
   if (!(regularization > 0.0 && regularization <= 1.0))
     return bad("regularization", "must be in (0, 1]");
   if (!(slack_stiffness >= 0.0 && slack_stiffness <= 1.0))

@@ -21,11 +21,7 @@ std::string RelaxOptions::invalid_reason(std::string* field) const {
     return std::string(why);
   };
   if (!(C > 1.0 && C <= 1e6)) return bad("C", "must be greater than 1 and at most 1e6");
-  if (!(std::isfinite(tolerance_N) && tolerance_N > 0.0))
-    return bad("tolerance_N", "must be a positive, finite force");
-  if (!(std::isfinite(tolerance_m) && tolerance_m >= 0.0))
-    return bad("tolerance_m", "must be a positive, finite distance (or 0: none)");
-  if (max_iterations < 0) return bad("max_iterations", "must not be negative");
+  if (std::string why = stop_settings(*this).invalid_reason(field); !why.empty()) return why;
   if (!(min_step_fraction >= 1e-300 && min_step_fraction < 1.0))
     return bad("min_step_fraction", "must be in [1e-300, 1)");
   // Bounds the divisions per node and sweep (C barely above 1 would take billions).

@@ -35,7 +35,7 @@ struct TransformFields {
   V3 center = V3::Zero();
 
   std::string vrml() const {
-    char text[400];
+    char text[1024];  // 17 numbers of up to 24 characters each, and the words
     std::snprintf(text, sizeof text,
                   "Transform { translation %.17g %.17g %.17g rotation %.17g %.17g %.17g %.17g scale %.17g %.17g %.17g "
                   "scaleOrientation %.17g %.17g %.17g %.17g center %.17g %.17g %.17g children [",
