@@ -1,8 +1,8 @@
 #pragma once
 // Transparent huge pages for large fabrics. A large run's arrays span gigabytes read in scattered
 // order: in 4 kB pages the processor's address cache misses and every page is a fault. With 2 MB
-// pages the dome at a million nodes ran in 46.3 s instead of 52.1 s on two threads (user time
-// 69.7 s against 78.8 s, 0.13 million page faults against 0.98 million; docs/speed.md, "Huge pages"). Where the kernel gives
+// pages the dome at a million nodes takes an eighth of the faults; whether that saves time depends
+// on how much memory the kernel must compact to find them (docs/speed.md, "Huge pages"). Where the kernel gives
 // huge pages only to memory that asks for them (transparent_hugepage "madvise", Debian's default),
 // glibc's malloc asks when its tunable glibc.malloc.hugetlb=1 is set, which it reads only as the
 // process starts; so a run of a large fabric starts itself again, in place (the same process,
@@ -12,8 +12,8 @@
 
 namespace fabform::cli {
 
-/// The fabrics from which a run asks for huge pages: at 40 000 nodes the dome ran 8 % faster with
-/// them, against the restart's 0.05 s.
+/// The fabrics from which a run asks for huge pages: from here a run takes seconds, beside which
+/// the restart (a process start) is small.
 constexpr double kHugePagesMinNodes = 40'000;
 
 /// GLIBC_TUNABLES with malloc's huge pages asked for, from its value now (null: unset); nothing

@@ -19,8 +19,8 @@ namespace fabform {
 // Below this many divisions a grid no longer resolves the scene's shape: no coarser level is made.
 constexpr int kMinContinuationDivisions = 8;
 // fabform's own choice coarsens no further than this many divisions: on the dome a coarser start
-// saves less than its solve costs (N = 201: 3.05 s with none, 1.29 s with two levels, to 50
-// divisions; docs/speed.md "Grid continuation").
+// saves less than its solve costs (the shipped dome, N = 201: 4.15 s with none, 2.06 s with two
+// levels, to 50 divisions; docs/speed.md "Multigrid instead of the factorisation").
 constexpr int kChosenCoarsestDivisions = 50;
 
 /// The levels fabform chooses for a scene that gives none: as many halvings as keep both
