@@ -4,7 +4,6 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
