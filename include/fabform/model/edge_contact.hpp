@@ -11,9 +11,13 @@
 // past (so that the energy is C¹ where a spring leaves one edge for the next), κ a stiffness far
 // above the fabric's, reached over a depth h of 2 % of a spring, so that Newton's matrix changes
 // continuously as a spring reaches under. Unlike a spring wrapped over an edge (edge_wrap.hpp),
-// whose path jumps from edge to edge, Π has a continuous gradient (but where a corner's cap takes
-// over from the wedge, and at the cut-off a spring's length from the edge), so Newton converges
-// on faceted CAD parts. A spring that reaches in by δ > h pushes out with κ w (δ − h/2): κ is
+// whose path jumps from edge to edge, Π changes continuously as a spring slides along and off an
+// edge, so Newton converges on faceted CAD punches. It is not smooth everywhere: its gradient
+// jumps where a corner's cap takes over from the wedge, and Π itself jumps at the cut-off a
+// spring's length from the edge and where the crossing reaches a spring's end at a node that lies
+// in a wedge but outside the body (beside a rounded corner, whose narrow facets end long before
+// their planes): vacuum-formed dies stall there (docs/forming.md, "Forming over a CAD part").
+// A spring that reaches in by δ > h pushes out with κ w (δ − h/2): κ is
 // 1000 times the softest spring's stiffness at rest, so a 3 mm spring 0.1 mm under pushes out
 // with what 23 springs carry at 100 % strain.
 #include <optional>
