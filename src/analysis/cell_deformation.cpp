@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "fabform/angles.hpp"
-#include "fabform/output/fabric_figures.hpp"
+#include "fabform/analysis/fabric_figures.hpp"
 
 namespace fabform {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "fabform/angles.hpp"
 #include "fabform/fabric/fabric_layout.hpp"
-#include "fabform/io/number_text.hpp"
+#include "fabform/number_text.hpp"
 
 namespace fabform {
 namespace {

@@ -1,6 +1,6 @@
 #include "fabform/io/obj_text.hpp"
 
-#include "fabform/io/number_text.hpp"
+#include "fabform/number_text.hpp"
 
 namespace fabform {
 

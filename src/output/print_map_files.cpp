@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "fabform/error.hpp"
-#include "fabform/io/number_text.hpp"
+#include "fabform/number_text.hpp"
 
 namespace fabform {
 namespace {

@@ -12,7 +12,7 @@
 #include "fabform/model/clamp_frame.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/wind.hpp"
-#include "fabform/solver/grid_continuation.hpp"
+#include "fabform/scene/continuation_grids.hpp"
 #include "fabform/solver/solver_registry.hpp"
 #include "scene/garment_toml.hpp"
 #include "scene/scene_overrides.hpp"

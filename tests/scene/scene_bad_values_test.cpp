@@ -704,7 +704,7 @@ const std::vector<KeyRow>& key_table() {
       {"solver.threads",                 T::integer,   lift, A,   R,  R,   R,   _,    "",
        {{"cap", "1024", A, kSame}, {"beyond_cap", "1025", R, kSame}}},
       // Newton's alone, and not in load steps: the lift's relax and the circle's newton both have a
-      // body path, so only 0 is accepted here; what it accepts is in grid_continuation_test.cpp.
+      // body path, so only 0 is accepted here; what it accepts is in continuation_grids_test.cpp.
       {"solver.continuation_levels",     T::integer,   lift, A,   R,  A,   R,   _,    "",
        {{"one_with_relax", "1", R, "solver.name"}, {"cap", "10", R, "solver.name"}, {"beyond_cap", "11", R, kSame}}},
       {"solver.continuation_levels",     T::only_extras, circle, _, _, _,  _,   _,    "",

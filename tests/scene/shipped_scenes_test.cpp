@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "fabform/analysis/contact_pressure.hpp"
+#include "fabform/analysis/draw_in.hpp"
+#include "fabform/analysis/fabric_figures.hpp"
 #include "fabform/analysis/ply_figures.hpp"
 #include "fabform/analysis/self_intersections.hpp"
 #include "fabform/model/equilibrium.hpp"
@@ -17,8 +19,6 @@
 #include "fabform/model/spring_cuts.hpp"
 #include "fabform/scene/model_builder.hpp"
 #include "fabform/scene/scene_toml.hpp"
-#include "fabform/output/draw_in.hpp"
-#include "fabform/output/fabric_figures.hpp"
 #include "fabform/solver/load_steps.hpp"
 #include "fabform/solver/solve.hpp"
 #include "test_paths.hpp"

@@ -15,8 +15,8 @@
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/model/model.hpp"
 #include "fabform/output/run_inputs.hpp"
+#include "fabform/run/coarse_grid_start.hpp"
 #include "fabform/scene/scene.hpp"
-#include "fabform/solver/grid_continuation.hpp"
 #include "fabform/solver/load_steps.hpp"
 #include "fabform/solver/solver_state.hpp"
 #include "fabform/solver/summary.hpp"
@@ -44,7 +44,7 @@ struct RunRecord {
   int threads = 1;
   bool huge_pages = false;  // whether the process's memory came in transparent huge pages
   const std::vector<StepResult>* steps = nullptr;  // the finished load steps, in order
-  // The coarser grids solved first (grid_continuation.hpp), coarsest first; null or empty: none.
+  // The coarser grids solved first (run/coarse_grid_start.hpp), coarsest first; null or empty: none.
   const std::vector<ContinuationLevel>* continuation = nullptr;
 };
 

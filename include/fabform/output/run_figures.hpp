@@ -3,12 +3,12 @@
 // result.json, fabric.vtk, bodies.vtk and a load step's files only write them
 // (result_writer.hpp). Every state written has its StateFigures; the final state adds its
 // cells' (CellFigures), which a load step's files do not carry.
-#include "fabform/analysis/garment_ease.hpp"
 #include "fabform/analysis/cell_deformation.hpp"
 #include "fabform/analysis/contact_pressure.hpp"
+#include "fabform/analysis/draw_in.hpp"
+#include "fabform/analysis/fabric_figures.hpp"
+#include "fabform/analysis/garment_ease.hpp"
 #include "fabform/model/spring_strains.hpp"
-#include "fabform/output/draw_in.hpp"
-#include "fabform/output/fabric_figures.hpp"
 #include "fabform/output/result_writer.hpp"
 
 namespace fabform {

@@ -25,7 +25,7 @@ struct SolverSpec {
   // e relative to the fabric's force scale (force_scale.hpp), when > 0: the run resolves it to
   // newtons once its model is built (set_tolerance_N).
   double tolerance_relative = 0.0;
-  // Grid continuation (grid_continuation.hpp): at most this many coarser grids, each half the
+  // Grid continuation (run/coarse_grid_start.hpp): at most this many coarser grids, each half the
   // last's divisions, solved first to give this grid its start; 0: none. Newton's alone. A scene
   // that gives none gets fabform's choice from its fabric's size (chosen_continuation_levels).
   int continuation_levels = 0;

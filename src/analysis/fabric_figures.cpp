@@ -1,4 +1,4 @@
-#include "fabform/output/fabric_figures.hpp"
+#include "fabform/analysis/fabric_figures.hpp"
 
 #include <algorithm>
 #include <cmath>

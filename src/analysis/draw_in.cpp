@@ -1,4 +1,4 @@
-#include "fabform/output/draw_in.hpp"
+#include "fabform/analysis/draw_in.hpp"
 
 #include <cmath>
 #include <limits>

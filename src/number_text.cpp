@@ -1,4 +1,4 @@
-#include "fabform/io/number_text.hpp"
+#include "fabform/number_text.hpp"
 
 #include <algorithm>
 #include <charconv>

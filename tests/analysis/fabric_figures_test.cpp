@@ -1,5 +1,5 @@
 // Fabric figures on shapes whose areas and strains are known by hand.
-#include "fabform/output/fabric_figures.hpp"
+#include "fabform/analysis/fabric_figures.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // NumberText writes what an ostringstream with the same precision writes, byte for byte: the
 // result files keep their exact text. Checked over random doubles at every scale, the values
 // whose rounding is awkward, signed zeros and non-finite values, and integers of every width.
-#include "fabform/io/number_text.hpp"
+#include "fabform/number_text.hpp"
 
 #include <cmath>
 #include <cstdint>

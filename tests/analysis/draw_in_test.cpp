@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "fabform/output/draw_in.hpp"
+#include "fabform/analysis/draw_in.hpp"
 #include "support/clamped_fabric.hpp"
 
 namespace fabform::draw_in_test {
