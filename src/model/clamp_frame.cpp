@@ -50,10 +50,4 @@ std::string ClampFrame::describe(const Model& /*model*/) const {
   return text;
 }
 
-std::string ClampFrame::refusal(const std::string& solver) const {
-  if (solver == "newton") return "";
-  return "the blank holder ([clamp]) slides with friction, which only newton models: " + solver +
-         (solver == "relax" ? "'s rule has no stick" : "'s time step would be bound by the holder's stick stiffness");
-}
-
 }  // namespace fabform

@@ -376,10 +376,4 @@ void EdgeContact::add_stiffness(const Model& model, const Positions& x, Stiffnes
   });
 }
 
-std::string EdgeContact::refusal(const std::string& solver) const {
-  if (solver == "newton") return "";
-  return "edge contact (edge_contact_deg) is a penalty far stiffer than the fabric, which only newton carries: " +
-         solver + (solver == "dynamic" ? "'s time step would be bound by it" : "'s node-by-node rule would crawl under it");
-}
-
 }  // namespace fabform

@@ -114,10 +114,4 @@ void HingeFriction::bound_stiffness(const Model& model, StiffnessBound& bound) c
   }
 }
 
-std::string HingeFriction::refusal(const std::string& solver) const {
-  if (solver != "dynamic") return "";
-  return "bending friction is modelled on its loading branch alone, from which dynamic's fabric would spring back: "
-         "use newton or relax";
-}
-
 }  // namespace fabform

@@ -67,6 +67,15 @@ bool Model::wraps_edges() const {
   return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.wrap_angle_deg() > 0.0; });
 }
 
+SolverNeeds Model::solver_needs() const {
+  SolverNeeds needs;
+  for (const auto& term : terms) needs = needs | term->needs();
+  // Friction against bodies and springs wrapped over their edges are the solvers' own, not terms.
+  if (has_friction()) needs = needs | SolverNeed::stick;
+  if (wraps_edges()) needs = needs | SolverNeed::no_time_step;
+  return needs;
+}
+
 int Model::load_steps() const {
   int steps = 0;
   for (const ToolPath& path : paths) steps = std::max(steps, path.steps);

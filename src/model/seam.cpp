@@ -190,13 +190,6 @@ void SeamTerm::bound_stiffness(const Model& /*model*/, StiffnessBound& bound) co
   }
 }
 
-std::string SeamTerm::refusal(const std::string& solver) const {
-  if (solver == "newton") return "";
-  return "a seam (a tube's, or a garment's) holds its edges with a stiffness a thousand times the fabric's, which only "
-         "newton takes in its step: " +
-         solver + (solver == "relax" ? " would move one node against it at a time" : "'s time step would be bound by it");
-}
-
 std::vector<SeamFigures> seam_figures(const Model& model, const Positions& x) {
   std::vector<SeamFigures> all;
   for (const SeamTerm* seams : terms_of<SeamTerm>(model))

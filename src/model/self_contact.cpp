@@ -160,13 +160,6 @@ void SelfContact::add_stiffness(const Model& /*model*/, const Positions& x, Stif
   }
 }
 
-std::string SelfContact::refusal(const std::string& solver) const {
-  if (solver == "newton") return "";
-  return "self-contact ([self_contact]) pushes plies apart with a stiffness a thousand times the fabric's, which only "
-         "newton takes in its step: " +
-         solver + (solver == "relax" ? " would move one node against it at a time" : "'s time step would be bound by it");
-}
-
 double self_contact_stiffness_N_m(const Model& model) {
   return kSelfContactRatio * std::max(model.warp.steepest_slope(), model.weft.steepest_slope());
 }

@@ -144,10 +144,4 @@ void ShearFriction::add_stiffness(const Model& model, const Positions& x, Stiffn
   });
 }
 
-std::string ShearFriction::refusal(const std::string& solver) const {
-  if (solver != "dynamic") return "";
-  return "shear friction is modelled on its loading branch alone, from which dynamic's fabric would spring back: "
-         "use newton or relax";
-}
-
 }  // namespace fabform

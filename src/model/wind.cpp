@@ -110,9 +110,4 @@ std::unique_ptr<StepDrag> WindLoad::drag(const Model& model, const Positions& x)
   return std::make_unique<WindDrag>(wind_, model.fabric, x);
 }
 
-std::string WindLoad::refusal(const std::string& solver) const {
-  if (solver == "dynamic") return "";
-  return "wind depends on the fabric's velocity (seed 004): only solver dynamic models it, not " + solver;
-}
-
 }  // namespace fabform

@@ -717,12 +717,12 @@ GivenHysteresis given_hysteresis(const Scene& scene) {
 // Friction in bending or shear is modelled on the KES loops' loading branch alone: a fabric
 // swinging back along it, as dynamic's would, would unbend or unshear elastically.
 void refuse_hysteresis_in_dynamic(const Scene& scene, TableReader& solver) {
-  if (scene.solver.name != "dynamic") return;
+  if (solver_gives(scene.solver.name, SolverNeed::loading_branch)) return;
   const GivenHysteresis friction = given_hysteresis(scene);
   if (friction.section.empty()) return;
   solver.fail("name", "the scene has " + friction.section + " friction (" + said_at(friction.where) +
-                          "), modelled on its loading branch alone, from which dynamic's fabric would spring back: "
-                          "use newton or relax");
+                          "), modelled on its loading branch alone, from which " + scene.solver.name +
+                          "'s fabric would spring back: use " + solvers_giving(SolverNeed::loading_branch));
 }
 
 // The same loading branch holds in load steps only while every hinge and cell keeps bending or
@@ -743,30 +743,50 @@ void refuse_hysteresis_in_load_steps(const Scene& scene) {
 // its history; friction needs the slip from where the node landed, which only newton and
 // dynamic carry.
 void refuse_friction_in_relax(const Scene& scene, TableReader& solver) {
-  if (scene.solver.name != "relax") return;
+  if (solver_gives(scene.solver.name, SolverNeed::stick)) return;
   for (const BodySpec& body : scene.bodies)
     if (body.friction > 0.0)
-      solver.fail("name", "body '" + body.name + "' has friction (" + said_at(body.friction_where) +
-                              "), which relax cannot carry (seed 003's rule has no stick or slip): use newton or dynamic");
+      solver.fail("name", "body '" + body.name + "' has friction (" + said_at(body.friction_where) + "), which " +
+                              scene.solver.name + " cannot carry (seed 003's rule has no stick or slip): use " +
+                              solvers_giving(SolverNeed::stick));
 }
 
 // A spring over an edge is as stiff across itself as its tension over its shorter leg, which
 // no time step bounds as a node nears the edge: explicit dynamics cannot carry it.
 void refuse_wrapped_edges_in_dynamic(const Scene& scene, TableReader& solver) {
-  if (scene.solver.name != "dynamic") return;
+  if (solver_gives(scene.solver.name, SolverNeed::no_time_step)) return;
   for (const BodySpec& body : scene.bodies)
     if (body.wrap_edges_deg > 0.0)
       solver.fail("name", "body '" + body.name + "' lets springs wrap its edges (" + said_at(body.wrap_edges_where) +
-                              "), which dynamic cannot carry (no stable time step bounds a wrapped spring): use newton or relax");
+                              "), which " + scene.solver.name +
+                              " cannot carry (no stable time step bounds a wrapped spring): use " +
+                              solvers_giving(SolverNeed::no_time_step));
 }
 
 // The edge penalty is far stiffer than the fabric: only newton, which takes its Hessian, carries it.
 void refuse_edge_contact_but_in_newton(const Scene& scene, TableReader& solver) {
-  if (scene.solver.name == "newton") return;
+  if (solver_gives(scene.solver.name, SolverNeed::stiff_penalty)) return;
+  const std::string who = solvers_giving(SolverNeed::stiff_penalty);
   for (const BodySpec& body : scene.bodies)
     if (body.edge_contact_deg > 0.0)
       solver.fail("name", "body '" + body.name + "' keeps springs from under its edges (" +
-                              said_at(body.edge_contact_where) + "), a penalty only newton carries: use newton");
+                              said_at(body.edge_contact_where) + "), a penalty only " + who + " carries: use " + who);
+}
+
+// Self-contact's penalty and a seam's stitches (a tube's, a garment's) are far stiffer than the
+// fabric: only a solver that takes them into its step carries them.
+void refuse_stiff_penalties_but_in_newton(const Scene& scene, TableReader& solver) {
+  if (solver_gives(scene.solver.name, SolverNeed::stiff_penalty)) return;
+  const std::string who = solvers_giving(SolverNeed::stiff_penalty);
+  if (scene.self_contact.on)
+    solver.fail("name", "the scene has self-contact ([self_contact], line " + std::to_string(scene.self_contact.where.line) +
+                            "), whose stiff penalty only " + who + " takes in its step, not " + scene.solver.name);
+  if (scene.fabric.tube != FabricSpec::Tube::none)
+    solver.fail("name", "the fabric is a tube (" + said_at(scene.fabric_where) + "), whose seam's stiff stitches only " +
+                            who + " takes in its step, not " + scene.solver.name);
+  if (!scene.seams.empty())
+    solver.fail("name", "the garment has seams (" + said_at(scene.seams.front().where) +
+                            "), whose stiff stitches only " + who + " takes in its step, not " + scene.solver.name);
 }
 
 Scene read_scene(const toml::table& root, const std::string& path,
@@ -804,27 +824,20 @@ Scene read_scene(const toml::table& root, const std::string& path,
   TableReader solver = r.table("solver", false);
   read_solver(solver, &scene);
   scene.tolerance_where = solver.locate_key("tolerance_relative");
-  if (scene.wind.on && scene.solver.name != "dynamic")
+  if (scene.wind.on && !solver_gives(scene.solver.name, SolverNeed::velocity))
     solver.fail("name", "the scene has wind (" + said_at(scene.wind.where) +
-                            "), which depends on the fabric's velocity (seed 004): only solver dynamic models it, not " +
-                            scene.solver.name);
+                            "), which depends on the fabric's velocity (seed 004): only solver " +
+                            solvers_giving(SolverNeed::velocity) + " models it, not " + scene.solver.name);
   refuse_friction_in_relax(scene, solver);
   refuse_wrapped_edges_in_dynamic(scene, solver);
   refuse_edge_contact_but_in_newton(scene, solver);
   refuse_hysteresis_in_dynamic(scene, solver);
   refuse_hysteresis_in_load_steps(scene);
-  if (scene.self_contact.on && scene.solver.name != "newton")
-    solver.fail("name", "the scene has self-contact ([self_contact], line " + std::to_string(scene.self_contact.where.line) +
-                            "), whose stiff penalty only newton takes in its step, not " + scene.solver.name);
-  if (scene.fabric.tube != FabricSpec::Tube::none && scene.solver.name != "newton")
-    solver.fail("name", "the fabric is a tube (" + said_at(scene.fabric_where) +
-                            "), whose seam's stiff stitches only newton takes in its step, not " + scene.solver.name);
-  if (!scene.seams.empty() && scene.solver.name != "newton")
-    solver.fail("name", "the garment has seams (" + said_at(scene.seams.front().where) +
-                            "), whose stiff stitches only newton takes in its step, not " + scene.solver.name);
-  if (scene.clamp.on && scene.solver.name != "newton")
+  refuse_stiff_penalties_but_in_newton(scene, solver);
+  if (scene.clamp.on && !solver_gives(scene.solver.name, SolverNeed::stick | SolverNeed::stiff_penalty))
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
-                            "), whose friction only newton models, not " + scene.solver.name);
+                            "), whose friction only " + solvers_giving(SolverNeed::stick | SolverNeed::stiff_penalty) +
+                            " models, not " + scene.solver.name);
   if (!solver.has("continuation_levels")) {
     scene.solver.continuation_levels = chosen_continuation_levels(scene);
     scene.solver.continuation_chosen = true;

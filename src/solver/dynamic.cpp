@@ -13,6 +13,7 @@
 #include "fabform/model/equilibrium.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/solver_loop.hpp"
+#include "fabform/solver/solver_registry.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -219,8 +220,8 @@ Summary dynamic(const Model& model, SolverState& state, const DynamicOptions& op
                 const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("dynamic: " + why);
-  if (model.wraps_edges())
-    throw std::invalid_argument("dynamic: no stable time step bounds a spring wrapped over an edge; use newton or relax");
+  if (const std::string why = solver_refusal(model, "dynamic"); !why.empty())
+    throw std::invalid_argument("dynamic: " + why);
   const auto started = std::chrono::steady_clock::now();
   Dynamics dynamics(model, state, options);
   // The forces at the state the last step reached give its residual and drive the next step.

@@ -12,6 +12,7 @@
 #include "fabform/model/potential_energy.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/solver_loop.hpp"
+#include "fabform/solver/solver_registry.hpp"
 #include "fabform/solver/position_error.hpp"
 #include "linalg/linear_solver.hpp"
 #include "linalg/sparse_diagonal.hpp"
@@ -306,6 +307,8 @@ std::string stall_message(const Summary& s) {
 Summary newton(const Model& model, SolverState& state, const NewtonOptions& options,
                const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
+    throw std::invalid_argument("newton: " + why);
+  if (const std::string why = solver_refusal(model, "newton"); !why.empty())
     throw std::invalid_argument("newton: " + why);
   const auto started = std::chrono::steady_clock::now();
   NewtonStep step(model, state, options);

@@ -11,6 +11,7 @@
 #include "fabform/model/spring_strains.hpp"
 #include "fabform/solver/contact_move.hpp"
 #include "fabform/solver/solver_loop.hpp"
+#include "fabform/solver/solver_registry.hpp"
 #include "fabform/thread_count.hpp"
 
 namespace fabform {
@@ -122,8 +123,8 @@ Summary relax(const Model& model, SolverState& state, const RelaxOptions& option
               const IterationObserver& observer, Summary resumed) {
   if (const std::string why = options.invalid_reason(); !why.empty())
     throw std::invalid_argument("relax: " + why);
-  if (model.has_friction())
-    throw std::invalid_argument("relax: seed 003's rule has no stick or slip; friction needs newton or dynamic");
+  if (const std::string why = solver_refusal(model, "relax"); !why.empty())
+    throw std::invalid_argument("relax: " + why);
   const auto started = std::chrono::steady_clock::now();
   Relaxation relaxation(model, state, options);
   const SolverSteps steps = rate_estimated_steps(state, options.tolerance_m, [&] { relaxation.sweep(); },

@@ -11,8 +11,7 @@ namespace fabform {
 Summary solve(const Model& model, SolverState& state, const SolverSpec& spec,
               const IterationObserver& observer, Summary resumed) {
   use_threads(spec.threads);
-  for (const auto& term : model.terms)
-    if (const std::string why = term->refusal(spec.name); !why.empty()) throw std::invalid_argument(why);
+  if (const std::string why = solver_refusal(model, spec.name); !why.empty()) throw std::invalid_argument(why);
   return solver_named(spec.name).run(model, state, spec, observer, std::move(resumed));
 }
 

@@ -1,13 +1,17 @@
 // The table of solvers: each row runs its own solver with its own options from the spec, and
-// the spec's tolerances are read from the named solver's options and set in every solver's.
+// the spec's tolerances are read from the named solver's options and set in every solver's; what
+// each solver gives the terms that need it, and the one check that refuses a model a solver cannot
+// carry, wherever the solve starts.
 #include "fabform/solver/solver_registry.hpp"
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "fabform/solver/solve.hpp"
 #include "support/clamped_fabric.hpp"
 
 namespace fabform::solver_registry_test {
@@ -80,6 +84,73 @@ TEST(SolverRegistry, NamesHowEachEstimatesItsDistanceFromTheRest) {
   EXPECT_EQ(solver_named("newton").position_error_estimate, "newton_step");
   EXPECT_EQ(solver_named("relax").position_error_estimate, "convergence_rate");
   EXPECT_EQ(solver_named("dynamic").position_error_estimate, "convergence_rate");
+}
+
+TEST(SolverRegistry, DeclaresWhatEachSolverGives) {
+  EXPECT_TRUE(solver_gives("dynamic", SolverNeed::velocity));
+  EXPECT_FALSE(solver_gives("newton", SolverNeed::velocity));
+  EXPECT_FALSE(solver_gives("relax", SolverNeed::stick));
+  EXPECT_TRUE(solver_gives("dynamic", SolverNeed::stick));
+  EXPECT_FALSE(solver_gives("dynamic", SolverNeed::no_time_step));
+  EXPECT_FALSE(solver_gives("dynamic", SolverNeed::loading_branch));
+  EXPECT_TRUE(solver_gives("relax", SolverNeed::no_time_step | SolverNeed::loading_branch));
+  EXPECT_TRUE(solver_gives("newton", SolverNeed::stick | SolverNeed::stiff_penalty | SolverNeed::no_time_step |
+                                         SolverNeed::loading_branch));
+  for (const SolverEntry& solver : solvers()) EXPECT_TRUE(solver_gives(solver.name, SolverNeeds())) << solver.name;
+  EXPECT_FALSE(solver_gives("simplex", SolverNeeds()));
+}
+
+TEST(SolverRegistry, SaysWhichSolversGiveANeedTheMostCapableFirst) {
+  EXPECT_EQ(solvers_giving(SolverNeed::stick), "newton or dynamic");
+  EXPECT_EQ(solvers_giving(SolverNeed::loading_branch), "newton or relax");
+  EXPECT_EQ(solvers_giving(SolverNeed::velocity), "dynamic");
+  EXPECT_EQ(solvers_giving(SolverNeed::stick | SolverNeed::stiff_penalty), "newton");
+  EXPECT_EQ(solvers_giving(SolverNeed::velocity | SolverNeed::stiff_penalty), "");
+  EXPECT_EQ(solvers_giving(SolverNeeds()), "newton or dynamic or relax");
+}
+
+// A term that asks for what it is given and does nothing else.
+class Needy final : public Term {
+ public:
+  explicit Needy(SolverNeeds needs) : needs_(needs) {}
+  std::string describe(const Model&) const override { return "needy"; }
+  Eigen::Vector3d force_at(const Model&, const Positions&, int, const Eigen::Vector3d&) const override {
+    return Eigen::Vector3d::Zero();
+  }
+  double energy(const Model&, const Positions&) const override { return 0.0; }
+  double node_energy_change(const Model&, const Positions&, int, const Eigen::Vector3d&) const override { return 0.0; }
+  SolverNeeds needs() const override { return needs_; }
+
+ private:
+  SolverNeeds needs_;
+};
+
+TEST(SolverRegistry, RefusesAModelWhoseNeedsItLacksWhereverTheSolveStarts) {
+  Model model = test::clamped_fabric(4, 0.01);
+  model.terms.push_back(std::make_shared<Needy>(SolverNeed::velocity));
+  EXPECT_EQ(solver_refusal(model, "dynamic"), "");
+  const std::string said = "the model needs a force that depends on the fabric's velocity, which newton does not give: use dynamic";
+  EXPECT_EQ(solver_refusal(model, "newton"), said);
+  SolverState state = SolverState::at_start(model);
+  SolverSpec spec;
+  spec.name = "newton";
+  try {
+    solve(model, state, spec);
+    ADD_FAILURE() << "solved";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()), said);
+  }
+  try {
+    newton(model, state, spec.newton);
+    ADD_FAILURE() << "solved";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()), "newton: " + said);
+  }
+  EXPECT_THROW(relax(model, state, spec.relax), std::invalid_argument);
+  model.terms.push_back(std::make_shared<Needy>(SolverNeed::stiff_penalty));
+  EXPECT_EQ(solver_refusal(model, "dynamic"),
+            "the model needs a stiffness far above the fabric's, taken into the step's matrix, which dynamic does not "
+            "give (no solver gives all it needs)");
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ class ClampFrame final : public Term {
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override {
     friction_.add_stiffness(model, x, sink);
   }
-  std::string refusal(const std::string& solver) const override;
+  SolverNeeds needs() const override { return SolverNeed::stick | SolverNeed::stiff_penalty; }
 
  private:
   std::vector<int> nodes_;

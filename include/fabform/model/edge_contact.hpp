@@ -87,7 +87,7 @@ class EdgeContact final : public Term {
                             const Eigen::Vector3d& at) const override;
   /// w φ''(δ) J Jᵀ per reach, J = ∂δ/∂(a, b): the Gauss–Newton part, positive semi-definite.
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
-  std::string refusal(const std::string& solver) const override;
+  SolverNeeds needs() const override { return SolverNeed::stiff_penalty; }
 
   /// How many edges the springs are kept from.
   int edge_count() const;

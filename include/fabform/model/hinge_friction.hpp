@@ -47,7 +47,7 @@ class HingeFriction final : public Term {
   /// (1 + √3)/(2·ε) in absolute value.
   void bound_stiffness(const Model& model, StiffnessBound& bound) const override;
   bool resists_bending() const override { return true; }
-  std::string refusal(const std::string& solver) const override;
+  SolverNeeds needs() const override { return SolverNeed::loading_branch; }
 
  private:
   double hysteresis_warp_N_;

@@ -59,6 +59,9 @@ struct Model {
   bool has_friction() const;
   /// Whether some body lets springs wrap its edges (spring_path.hpp).
   bool wraps_edges() const;
+  /// What the model asks of the solver that solves it: its terms' needs, with stick where a
+  /// body has friction and a step no time step bounds where springs wrap a body's edges.
+  SolverNeeds solver_needs() const;
   /// K, the load steps in which the bodies travel; 0 when none moves.
   int load_steps() const;
 };

@@ -52,7 +52,7 @@ class SelfContact final : public Term {
   double energy(const Model& model, const Positions& x) const override;
   double node_energy_change(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const override;
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
-  std::string refusal(const std::string& solver) const override;
+  SolverNeeds needs() const override { return SolverNeed::stiff_penalty; }
 
  private:
   bool excluded(int node, int triangle) const;

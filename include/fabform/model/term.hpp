@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "fabform/fabric/node_set.hpp"
+#include "fabform/model/solver_needs.hpp"
 
 namespace fabform {
 
@@ -110,8 +111,8 @@ class Term {
   /// The term resists folding (a fabric compressed flat then says bending did not stop it).
   virtual bool resists_bending() const { return false; }
 
-  /// Why solver `solver` cannot model the term, or "" when it can.
-  virtual std::string refusal(const std::string& /*solver*/) const { return ""; }
+  /// What the term asks of the solver that carries it (solver_needs.hpp); none by default.
+  virtual SolverNeeds needs() const { return {}; }
 
   /// A warning when tolerance e is too coarse for the term to show in a run, or "".
   virtual std::string tolerance_warning(double /*tolerance_N*/) const { return ""; }

@@ -70,7 +70,7 @@ class WindLoad final : public Term {
   /// held axis leaks into a free one through (n·v)·n.
   std::unique_ptr<StepDrag> drag(const Model& model, const Positions& x) const override;
   bool external() const override { return true; }
-  std::string refusal(const std::string& solver) const override;
+  SolverNeeds needs() const override { return SolverNeed::velocity; }
 
  private:
   Wind wind_;

@@ -63,6 +63,8 @@ struct SolverEntry {
   std::string (*invalid_reason)(const SolverSpec& spec, std::string* field);
   // How it estimates the distance from the rest (position_error.hpp), as result.json names it.
   std::string position_error_estimate;
+  // What it gives the terms and features that need it (solver_needs.hpp).
+  SolverNeeds gives;
 };
 
 /// Every solver, in the order `fabform solvers` lists them.
@@ -73,5 +75,15 @@ const SolverEntry* find_solver(const std::string& name);
 
 /// The solver named `name`; throws std::invalid_argument when fabform has none of that name.
 const SolverEntry& solver_named(const std::string& name);
+
+/// Whether solver `name` gives every need of `needs` (false for a name fabform does not know).
+bool solver_gives(const std::string& name, SolverNeeds needs);
+
+/// The solvers that give every need of `needs`, the most capable first: "newton or relax".
+std::string solvers_giving(SolverNeeds needs);
+
+/// Why solver `name` cannot solve `model`: what the model needs that it does not give, and which
+/// solvers do; "" when it can.
+std::string solver_refusal(const Model& model, const std::string& name);
 
 }  // namespace fabform
