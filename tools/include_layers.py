@@ -2,9 +2,9 @@
 """The include graph of fabform's C++ between its folders, against the layers they are meant to
 stand in: a folder may include its own layer's headers and those of layers below it, never above.
 
-Layers, lowest first (the top-level headers, error.hpp and the like, are under everything):
-  geometry, material, linalg < fabric < io < model < solver < scene < analysis < run < output
-  < study < cli
+Layers, lowest first:
+  the top-level files (error.hpp and the like) < geometry, material, linalg < fabric < io < model
+  < solver < scene < analysis < run < output < study < cli
 A file's folder is the first folder under src/ or include/fabform/; an include names its folder
 as "fabform/FOLDER/..." (or "FOLDER/..." for src/'s private headers).
 
@@ -21,7 +21,8 @@ import pathlib
 import re
 import sys
 
-LAYERS = [("geometry", "material", "linalg"), ("fabric",), ("io",), ("model",), ("solver",), ("scene",),
+TOP = "(top level)"  # error.hpp, number_text.hpp and the like: under every folder
+LAYERS = [(TOP,), ("geometry", "material", "linalg"), ("fabric",), ("io",), ("model",), ("solver",), ("scene",),
           ("analysis",), ("run",), ("output",), ("study",), ("cli",)]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"(?:fabform/)?([a-z_]+)/')
 
@@ -40,12 +41,11 @@ def arrows(root: pathlib.Path) -> dict:
     for base in bases:
         for path in sorted(base.rglob("*.[ch]pp")):
             parts = path.relative_to(base).parts
-            if len(parts) < 2:
-                continue  # a top-level file: under every layer, it includes none of them
+            folder = parts[0] if len(parts) > 1 else TOP
             for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
                 match = INCLUDE.match(line)
-                if match and match.group(1) != parts[0] and any((b / match.group(1)).is_dir() for b in bases):
-                    found[(parts[0], match.group(1))].append((str(path.relative_to(root)), number))
+                if match and match.group(1) != folder and any((b / match.group(1)).is_dir() for b in bases):
+                    found[(folder, match.group(1))].append((str(path.relative_to(root)), number))
     return found
 
 

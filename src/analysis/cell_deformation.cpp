@@ -4,8 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "fabform/angles.hpp"
 #include "fabform/analysis/fabric_figures.hpp"
+#include "fabform/angles.hpp"
 
 namespace fabform {
 namespace {

@@ -15,8 +15,7 @@ std::string to_string(SolverNeed need) {
 
 std::string SolverNeeds::said() const {
   std::string text;
-  for (const SolverNeed need : {SolverNeed::velocity, SolverNeed::stick, SolverNeed::stiff_penalty,
-                                SolverNeed::no_time_step, SolverNeed::loading_branch})
+  for (const SolverNeed need : kEveryNeed)
     if (contains(need)) text += (text.empty() ? "" : " and ") + to_string(need);
   return text;
 }

@@ -716,7 +716,7 @@ GivenHysteresis given_hysteresis(const Scene& scene) {
 
 // Friction in bending or shear is modelled on the KES loops' loading branch alone: a fabric
 // swinging back along it, as dynamic's would, would unbend or unshear elastically.
-void refuse_hysteresis_in_dynamic(const Scene& scene, TableReader& solver) {
+void refuse_hysteresis_without_loading_branch(const Scene& scene, TableReader& solver) {
   if (solver_gives(scene.solver.name, SolverNeed::loading_branch)) return;
   const GivenHysteresis friction = given_hysteresis(scene);
   if (friction.section.empty()) return;
@@ -739,10 +739,10 @@ void refuse_hysteresis_in_load_steps(const Scene& scene) {
                                            "back along it: leave out the friction or the body's path");
 }
 
-// Seed 003's relaxation moves a node along its unbalanced force, which a stuck node has whatever
-// its history; friction needs the slip from where the node landed, which only newton and
-// dynamic carry.
-void refuse_friction_in_relax(const Scene& scene, TableReader& solver) {
+// Friction needs the slip from where a node landed (SolverNeed::stick). Seed 003's relaxation,
+// the solver without it, moves a node along its unbalanced force, which a stuck node has
+// whatever its history.
+void refuse_friction_without_stick(const Scene& scene, TableReader& solver) {
   if (solver_gives(scene.solver.name, SolverNeed::stick)) return;
   for (const BodySpec& body : scene.bodies)
     if (body.friction > 0.0)
@@ -753,7 +753,7 @@ void refuse_friction_in_relax(const Scene& scene, TableReader& solver) {
 
 // A spring over an edge is as stiff across itself as its tension over its shorter leg, which
 // no time step bounds as a node nears the edge: explicit dynamics cannot carry it.
-void refuse_wrapped_edges_in_dynamic(const Scene& scene, TableReader& solver) {
+void refuse_wrapped_edges_under_a_time_step(const Scene& scene, TableReader& solver) {
   if (solver_gives(scene.solver.name, SolverNeed::no_time_step)) return;
   for (const BodySpec& body : scene.bodies)
     if (body.wrap_edges_deg > 0.0)
@@ -763,21 +763,15 @@ void refuse_wrapped_edges_in_dynamic(const Scene& scene, TableReader& solver) {
                               solvers_giving(SolverNeed::no_time_step));
 }
 
-// The edge penalty is far stiffer than the fabric: only newton, which takes its Hessian, carries it.
-void refuse_edge_contact_but_in_newton(const Scene& scene, TableReader& solver) {
+// The edge penalty, self-contact's and a seam's stitches (a tube's, a garment's) are far stiffer
+// than the fabric: only a solver that takes them into its step's matrix carries them.
+void refuse_stiff_penalties_without_their_matrix(const Scene& scene, TableReader& solver) {
   if (solver_gives(scene.solver.name, SolverNeed::stiff_penalty)) return;
   const std::string who = solvers_giving(SolverNeed::stiff_penalty);
   for (const BodySpec& body : scene.bodies)
     if (body.edge_contact_deg > 0.0)
       solver.fail("name", "body '" + body.name + "' keeps springs from under its edges (" +
                               said_at(body.edge_contact_where) + "), a penalty only " + who + " carries: use " + who);
-}
-
-// Self-contact's penalty and a seam's stitches (a tube's, a garment's) are far stiffer than the
-// fabric: only a solver that takes them into its step carries them.
-void refuse_stiff_penalties_but_in_newton(const Scene& scene, TableReader& solver) {
-  if (solver_gives(scene.solver.name, SolverNeed::stiff_penalty)) return;
-  const std::string who = solvers_giving(SolverNeed::stiff_penalty);
   if (scene.self_contact.on)
     solver.fail("name", "the scene has self-contact ([self_contact], line " + std::to_string(scene.self_contact.where.line) +
                             "), whose stiff penalty only " + who + " takes in its step, not " + scene.solver.name);
@@ -828,12 +822,11 @@ Scene read_scene(const toml::table& root, const std::string& path,
     solver.fail("name", "the scene has wind (" + said_at(scene.wind.where) +
                             "), which depends on the fabric's velocity (seed 004): only solver " +
                             solvers_giving(SolverNeed::velocity) + " models it, not " + scene.solver.name);
-  refuse_friction_in_relax(scene, solver);
-  refuse_wrapped_edges_in_dynamic(scene, solver);
-  refuse_edge_contact_but_in_newton(scene, solver);
-  refuse_hysteresis_in_dynamic(scene, solver);
+  refuse_friction_without_stick(scene, solver);
+  refuse_wrapped_edges_under_a_time_step(scene, solver);
+  refuse_stiff_penalties_without_their_matrix(scene, solver);
+  refuse_hysteresis_without_loading_branch(scene, solver);
   refuse_hysteresis_in_load_steps(scene);
-  refuse_stiff_penalties_but_in_newton(scene, solver);
   if (scene.clamp.on && !solver_gives(scene.solver.name, SolverNeed::stick | SolverNeed::stiff_penalty))
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
                             "), whose friction only " + solvers_giving(SolverNeed::stick | SolverNeed::stiff_penalty) +

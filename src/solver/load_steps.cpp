@@ -90,6 +90,11 @@ void begin_load_step(Model& model, SolverState& state, double from, double to) {
   state.velocity.clear();  // each step starts from rest
 }
 
+void stand_bodies_at_step(Model& model, int step) {
+  for (std::size_t b = 0; b < model.paths.size(); ++b)
+    if (model.paths[b].moves()) model.bodies[b].move_to(model.paths[b].pose(step));
+}
+
 void begin_load_step(Model& model, SolverState& state, int step) {
   begin_load_step(model, state, static_cast<double>(step - 1), static_cast<double>(step));
 }
@@ -303,8 +308,7 @@ Summary solve_in_steps(Model& model, SolverState& state, const SolverSpec& spec,
   Summary run = begin_summary(spec.name, spec.tolerance_N(), std::move(resumed), spec.tolerance_m());
   const int resumed_step = run.history.empty() ? 0 : run.history.back().step;
   // The bodies stand where the checkpoint's step put them; the state is already carried.
-  for (std::size_t b = 0; b < model.paths.size() && resumed_step > 0; ++b)
-    if (model.paths[b].moves()) model.bodies[b].move_to(model.paths[b].pose(resumed_step));
+  if (resumed_step > 0) stand_bodies_at_step(model, resumed_step);
   for (int step = resumed_step > 0 ? resumed_step : 1; step <= steps; ++step) {
     LoadStep load_step(model, state, spec, observer, run, step, steps);
     if (!load_step.solve(step == resumed_step)) return run;

@@ -30,10 +30,26 @@ void set_in_every_solver(SolverSpec& spec, Value StopSettings::*setting, Value v
   }
 }
 
+// What in `model` needs more than `gives`: its terms, by the names they describe themselves with,
+// and friction or wrapped edges, which are the solvers' own.
+std::string needing_more(const Model& model, SolverNeeds gives) {
+  std::string names;
+  const auto add = [&](const std::string& name) { names += (names.empty() ? "" : ", ") + name; };
+  for (const auto& term : model.terms)
+    if (!gives.contains(term->needs())) {
+      const std::string said = term->describe(model);
+      add(said.substr(0, said.find(':')));
+    }
+  if (model.has_friction() && !gives.contains(SolverNeed::stick)) add("friction against the bodies");
+  if (model.wraps_edges() && !gives.contains(SolverNeed::no_time_step)) add("springs wrapped over edges");
+  return names;
+}
+
 }  // namespace
 
 const std::vector<SolverEntry>& solvers() {
   static const std::vector<SolverEntry> table = {
+      // Least capable first (solvers_giving reads the table backwards).
       // Seed 003's rule moves one node at a time along its force: no stick, but no time step.
       entry<&SolverSpec::relax, &relax>("relax", "convergence_rate",
                                         SolverNeed::no_time_step | SolverNeed::loading_branch),
@@ -75,9 +91,10 @@ std::string solver_refusal(const Model& model, const std::string& name) {
   const SolverEntry& solver = solver_named(name);
   if (solver.gives.contains(needs)) return "";
   const std::string who = solvers_giving(needs);
-  return "the model needs " + (needs - solver.gives).said() + ", which " + name + " does not give" +
-         (who.empty() ? " (no solver gives all it needs)" : ": use " + who);
+  return needing_more(model, solver.gives) + ": the model needs " + (needs - solver.gives).said() + ", which " + name +
+         " does not give" + (who.empty() ? " (no solver gives all it needs)" : ": use " + who);
 }
+
 
 void SolverSpec::set_tolerance_N(double tolerance_N) {
   set_in_every_solver(*this, &StopSettings::tolerance_N, tolerance_N);

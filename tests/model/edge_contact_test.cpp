@@ -11,7 +11,6 @@
 
 #include "fabform/model/edge_contact.hpp"
 #include "fabform/model/model.hpp"
-#include "fabform/solver/solver_registry.hpp"
 #include "support/clamped_fabric.hpp"
 #include "support/shapes.hpp"
 
@@ -163,9 +162,7 @@ TEST(EdgeContact, TheTermsForcesAreItsEnergysDerivativeAndPushOut) {
 TEST(EdgeContact, OnlyNewtonCarriesIt) {
   const Model model = strip_over_cube(std::vector<Eigen::Vector3d>(10, Eigen::Vector3d::Zero()));
   const EdgeContact term(model, {45.0}, 1e5);
-  EXPECT_TRUE(solver_gives("newton", term.needs()));
-  EXPECT_FALSE(solver_gives("relax", term.needs()));
-  EXPECT_FALSE(solver_gives("dynamic", term.needs()));
+  EXPECT_EQ(term.needs(), SolverNeeds(SolverNeed::stiff_penalty));
   EXPECT_THROW(EdgeContact(model, {45.0}, 0.0), std::invalid_argument);
 }
 

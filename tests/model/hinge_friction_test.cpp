@@ -25,6 +25,10 @@ Model hinged_model(FabricSpec spec) {
   return test::free_model(Fabric(spec));
 }
 
+TEST(HingeFriction, NeedsItsLoadingBranchKept) {
+  EXPECT_EQ(HingeFriction(4e-4, 4e-4, 10.0).needs(), SolverNeeds(SolverNeed::loading_branch));
+}
+
 TEST(HingeFriction, FoldPastTheRoundingStoresTheFrictionMomentsWork) {
   const Model model = hinged_model({0.2, 0.1, 6, 3});
   const HingeFriction friction(4e-4, 4e-4, 10.0);

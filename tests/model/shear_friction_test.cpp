@@ -27,6 +27,10 @@ std::vector<FabricSpec> meshes() {
   return {FabricSpec{0.2, 0.1, 6, 3}, FabricSpec{0.2, 0.1, 4, 8}, jittered};
 }
 
+TEST(ShearFriction, NeedsItsLoadingBranchKept) {
+  EXPECT_EQ(ShearFriction(1.0, 1e-3).needs(), SolverNeeds(SolverNeed::loading_branch));
+}
+
 TEST(ShearFriction, ShearAngleIsTheCellsSimpleShearAndIgnoresItsStretch) {
   const ShearFriction friction(1.0, 1e-3);
   for (const FabricSpec& spec : {FabricSpec{0.2, 0.1, 6, 3}, FabricSpec{0.2, 0.1, 4, 8}}) {

@@ -23,9 +23,7 @@ TEST(SolverNeeds, SayTheirNeedsInDeclaredOrder) {
   EXPECT_EQ(SolverNeeds(SolverNeed::stick).said(), to_string(SolverNeed::stick));
   EXPECT_EQ((SolverNeed::loading_branch | SolverNeed::velocity).said(),
             to_string(SolverNeed::velocity) + " and " + to_string(SolverNeed::loading_branch));
-  for (const SolverNeed need : {SolverNeed::velocity, SolverNeed::stick, SolverNeed::stiff_penalty,
-                                SolverNeed::no_time_step, SolverNeed::loading_branch})
-    EXPECT_FALSE(to_string(need).empty());
+  for (const SolverNeed need : kEveryNeed) EXPECT_FALSE(to_string(need).empty());
 }
 
 }  // namespace

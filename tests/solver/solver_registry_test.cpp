@@ -129,7 +129,8 @@ TEST(SolverRegistry, RefusesAModelWhoseNeedsItLacksWhereverTheSolveStarts) {
   Model model = test::clamped_fabric(4, 0.01);
   model.terms.push_back(std::make_shared<Needy>(SolverNeed::velocity));
   EXPECT_EQ(solver_refusal(model, "dynamic"), "");
-  const std::string said = "the model needs a force that depends on the fabric's velocity, which newton does not give: use dynamic";
+  const std::string said =
+      "needy: the model needs a force that depends on the fabric's velocity, which newton does not give: use dynamic";
   EXPECT_EQ(solver_refusal(model, "newton"), said);
   SolverState state = SolverState::at_start(model);
   SolverSpec spec;
@@ -138,7 +139,7 @@ TEST(SolverRegistry, RefusesAModelWhoseNeedsItLacksWhereverTheSolveStarts) {
     solve(model, state, spec);
     ADD_FAILURE() << "solved";
   } catch (const std::invalid_argument& error) {
-    EXPECT_EQ(std::string(error.what()), said);
+    EXPECT_EQ(std::string(error.what()), "newton: " + said);
   }
   try {
     newton(model, state, spec.newton);
@@ -149,8 +150,11 @@ TEST(SolverRegistry, RefusesAModelWhoseNeedsItLacksWhereverTheSolveStarts) {
   EXPECT_THROW(relax(model, state, spec.relax), std::invalid_argument);
   model.terms.push_back(std::make_shared<Needy>(SolverNeed::stiff_penalty));
   EXPECT_EQ(solver_refusal(model, "dynamic"),
-            "the model needs a stiffness far above the fabric's, taken into the step's matrix, which dynamic does not "
-            "give (no solver gives all it needs)");
+            "needy: the model needs a stiffness far above the fabric's, taken into the step's matrix, which dynamic "
+            "does not give (no solver gives all it needs)");
+  EXPECT_EQ(solver_refusal(model, "newton"),
+            "needy: the model needs a force that depends on the fabric's velocity, which newton does not give (no "
+            "solver gives all it needs)");
 }
 
 }  // namespace

@@ -49,6 +49,13 @@ class IncludeLayers(unittest.TestCase):
             self.assertIn('"fabric" -> "model" [label=1, color=red];', dot.stdout)
             self.assertIn('"model" -> "fabric" [label=1];', dot.stdout)
 
+    def test_a_top_level_file_including_a_folder_runs_upward(self):
+        with tree({"src/error.cpp": '#include "fabform/model/term.hpp"\n',
+                   "include/fabform/model/term.hpp": "#pragma once\n"}) as root:
+            result = run(root)
+            self.assertEqual(result.returncode, 1, result.stdout + result.stderr)
+            self.assertIn("(top level) -> model: 1 include(s)  UPWARD\n    src/error.cpp:1\n", result.stdout)
+
     def test_a_folder_in_no_layer_is_refused(self):
         with tree({"src/gadgets/gadget.cpp": '#include "fabform/model/term.hpp"\n',
                    "include/fabform/model/term.hpp": "#pragma once\n"}) as root:

@@ -1,7 +1,8 @@
 #pragma once
 // What a term, or a scene's feature, asks of the solver that carries it. Each solver declares what
-// it gives (SolverEntry::gives, solver_registry.hpp), and one check says what a solver lacks: the
-// scene reader's, which names the scene's key, and the solve's (solver_refusal).
+// it gives (SolverEntry::gives, solver_registry.hpp), in one table: the scene reader asks it
+// (solver_gives), naming the scene's key, and each solver asks it of its model on entry
+// (solver_refusal).
 #include <string>
 
 namespace fabform {
@@ -13,6 +14,10 @@ enum class SolverNeed : unsigned {
   no_time_step = 1u << 3,    // a stiffness no stable time step bounds (a spring wrapped over an edge)
   loading_branch = 1u << 4,  // hysteresis on its loading branch alone, along which nothing swings back
 };
+
+/// Every need, in the order they are declared (and said).
+constexpr SolverNeed kEveryNeed[] = {SolverNeed::velocity, SolverNeed::stick, SolverNeed::stiff_penalty,
+                                     SolverNeed::no_time_step, SolverNeed::loading_branch};
 
 /// A set of needs.
 class SolverNeeds {

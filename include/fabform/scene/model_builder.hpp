@@ -11,7 +11,7 @@ namespace fabform {
 Model build_model(const Scene& scene);
 
 /// The same, with the bodies made from `placed_from`'s meshes as placed instead of read again:
-/// for a model of the same scene on another grid (grid_continuation.cpp), whose bodies do not
+/// for a model of the same scene on another grid (run/coarse_grid_start.cpp), whose bodies do not
 /// travel. `placed_from` may be null (read them).
 Model build_model(const Scene& scene, const Model* placed_from);
 

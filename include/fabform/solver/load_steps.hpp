@@ -58,6 +58,10 @@ class StepObserver {
   Call call_;
 };
 
+/// Stands every travelling body at its pose after step `step`, the fabric left where it is: where
+/// a checkpoint written in that step has them.
+void stand_bodies_at_step(Model& model, int step);
+
 /// Moves the bodies to their poses after step `step` − 1 and the fabric with them
 /// (step 1: from their placements).
 void begin_load_step(Model& model, SolverState& state, int step);

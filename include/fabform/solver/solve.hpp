@@ -8,8 +8,9 @@
 
 namespace fabform {
 
-/// Runs the named solver from `state`, going on from `resumed` when it is a checkpoint's. Throws std::invalid_argument for an unknown name or
-/// options the solver refuses.
+/// Runs the named solver from `state`, going on from `resumed` when it is a checkpoint's. Throws
+/// std::invalid_argument for an unknown name, options the solver refuses, or a model it cannot
+/// carry (solver_refusal).
 Summary solve(const Model& model, SolverState& state, const SolverSpec& spec,
               const IterationObserver& observer = {}, Summary resumed = {});
 

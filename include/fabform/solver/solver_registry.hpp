@@ -79,11 +79,13 @@ const SolverEntry& solver_named(const std::string& name);
 /// Whether solver `name` gives every need of `needs` (false for a name fabform does not know).
 bool solver_gives(const std::string& name, SolverNeeds needs);
 
-/// The solvers that give every need of `needs`, the most capable first: "newton or relax".
+/// The solvers that give every need of `needs`, the most capable first (the table backwards):
+/// "newton or relax".
 std::string solvers_giving(SolverNeeds needs);
 
-/// Why solver `name` cannot solve `model`: what the model needs that it does not give, and which
-/// solvers do; "" when it can.
+/// Why solver `name` cannot solve `model`: what in the model needs what it does not give, and
+/// which solvers give it; "" when it can. Throws std::invalid_argument for an unknown name. The
+/// solvers ask it on entry.
 std::string solver_refusal(const Model& model, const std::string& name);
 
 }  // namespace fabform
