@@ -95,7 +95,6 @@ std::string solver_refusal(const Model& model, const std::string& name) {
          " does not give" + (who.empty() ? " (no solver gives all it needs)" : ": use " + who);
 }
 
-
 void SolverSpec::set_tolerance_N(double tolerance_N) {
   set_in_every_solver(*this, &StopSettings::tolerance_N, tolerance_N);
 }
