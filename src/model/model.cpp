@@ -67,12 +67,21 @@ bool Model::wraps_edges() const {
   return std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return b.wrap_angle_deg() > 0.0; });
 }
 
+std::vector<NeedingPart> Model::parts_needing() const {
+  std::vector<NeedingPart> parts;
+  for (const auto& term : terms)
+    if (!term->needs().empty()) {
+      const std::string said = term->describe(*this);
+      parts.push_back({said.substr(0, said.find(':')), term->needs()});
+    }
+  if (has_friction()) parts.push_back({"friction against the bodies", kBodyFrictionNeeds});
+  if (wraps_edges()) parts.push_back({"springs wrapped over edges", kWrappedEdgeNeeds});
+  return parts;
+}
+
 SolverNeeds Model::solver_needs() const {
   SolverNeeds needs;
-  for (const auto& term : terms) needs = needs | term->needs();
-  // Friction against bodies and springs wrapped over their edges are the solvers' own, not terms.
-  if (has_friction()) needs = needs | SolverNeed::stick;
-  if (wraps_edges()) needs = needs | SolverNeed::no_time_step;
+  for (const NeedingPart& part : parts_needing()) needs = needs | part.needs;
   return needs;
 }
 

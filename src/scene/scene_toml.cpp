@@ -10,7 +10,12 @@
 #include <sstream>
 
 #include "fabform/model/clamp_frame.hpp"
+#include "fabform/model/edge_contact.hpp"
 #include "fabform/model/gravity.hpp"
+#include "fabform/model/hinge_friction.hpp"
+#include "fabform/model/seam.hpp"
+#include "fabform/model/self_contact.hpp"
+#include "fabform/model/shear_friction.hpp"
 #include "fabform/model/wind.hpp"
 #include "fabform/scene/continuation_grids.hpp"
 #include "fabform/solver/solver_registry.hpp"
@@ -717,12 +722,12 @@ GivenHysteresis given_hysteresis(const Scene& scene) {
 // Friction in bending or shear is modelled on the KES loops' loading branch alone: a fabric
 // swinging back along it, as dynamic's would, would unbend or unshear elastically.
 void refuse_hysteresis_without_loading_branch(const Scene& scene, TableReader& solver) {
-  if (solver_gives(scene.solver.name, SolverNeed::loading_branch)) return;
+  if (solver_gives(scene.solver.name, HingeFriction::kNeeds | ShearFriction::kNeeds)) return;
   const GivenHysteresis friction = given_hysteresis(scene);
   if (friction.section.empty()) return;
   solver.fail("name", "the scene has " + friction.section + " friction (" + said_at(friction.where) +
                           "), modelled on its loading branch alone, from which " + scene.solver.name +
-                          "'s fabric would spring back: use " + solvers_giving(SolverNeed::loading_branch));
+                          "'s fabric would spring back: use " + solvers_giving(HingeFriction::kNeeds | ShearFriction::kNeeds));
 }
 
 // The same loading branch holds in load steps only while every hinge and cell keeps bending or
@@ -739,48 +744,50 @@ void refuse_hysteresis_in_load_steps(const Scene& scene) {
                                            "back along it: leave out the friction or the body's path");
 }
 
-// Friction needs the slip from where a node landed (SolverNeed::stick). Seed 003's relaxation,
+// Friction needs the slip from where a node landed (kBodyFrictionNeeds). Seed 003's relaxation,
 // the solver without it, moves a node along its unbalanced force, which a stuck node has
 // whatever its history.
 void refuse_friction_without_stick(const Scene& scene, TableReader& solver) {
-  if (solver_gives(scene.solver.name, SolverNeed::stick)) return;
+  if (solver_gives(scene.solver.name, kBodyFrictionNeeds)) return;
   for (const BodySpec& body : scene.bodies)
     if (body.friction > 0.0)
       solver.fail("name", "body '" + body.name + "' has friction (" + said_at(body.friction_where) + "), which " +
                               scene.solver.name + " cannot carry (seed 003's rule has no stick or slip): use " +
-                              solvers_giving(SolverNeed::stick));
+                              solvers_giving(kBodyFrictionNeeds));
 }
 
 // A spring over an edge is as stiff across itself as its tension over its shorter leg, which
 // no time step bounds as a node nears the edge: explicit dynamics cannot carry it.
 void refuse_wrapped_edges_under_a_time_step(const Scene& scene, TableReader& solver) {
-  if (solver_gives(scene.solver.name, SolverNeed::no_time_step)) return;
+  if (solver_gives(scene.solver.name, kWrappedEdgeNeeds)) return;
   for (const BodySpec& body : scene.bodies)
     if (body.wrap_edges_deg > 0.0)
       solver.fail("name", "body '" + body.name + "' lets springs wrap its edges (" + said_at(body.wrap_edges_where) +
                               "), which " + scene.solver.name +
                               " cannot carry (no stable time step bounds a wrapped spring): use " +
-                              solvers_giving(SolverNeed::no_time_step));
+                              solvers_giving(kWrappedEdgeNeeds));
 }
 
 // The edge penalty, self-contact's and a seam's stitches (a tube's, a garment's) are far stiffer
 // than the fabric: only a solver that takes them into its step's matrix carries them.
 void refuse_stiff_penalties_without_their_matrix(const Scene& scene, TableReader& solver) {
-  if (solver_gives(scene.solver.name, SolverNeed::stiff_penalty)) return;
-  const std::string who = solvers_giving(SolverNeed::stiff_penalty);
+  const std::string& name = scene.solver.name;
+  const std::string stitches = " takes in its step, not " + name;
   for (const BodySpec& body : scene.bodies)
-    if (body.edge_contact_deg > 0.0)
+    if (body.edge_contact_deg > 0.0 && !solver_gives(name, EdgeContact::kNeeds)) {
+      const std::string who = solvers_giving(EdgeContact::kNeeds);
       solver.fail("name", "body '" + body.name + "' keeps springs from under its edges (" +
                               said_at(body.edge_contact_where) + "), a penalty only " + who + " carries: use " + who);
-  if (scene.self_contact.on)
+    }
+  if (scene.self_contact.on && !solver_gives(name, SelfContact::kNeeds))
     solver.fail("name", "the scene has self-contact ([self_contact], line " + std::to_string(scene.self_contact.where.line) +
-                            "), whose stiff penalty only " + who + " takes in its step, not " + scene.solver.name);
-  if (scene.fabric.tube != FabricSpec::Tube::none)
+                            "), whose stiff penalty only " + solvers_giving(SelfContact::kNeeds) + stitches);
+  if (scene.fabric.tube != FabricSpec::Tube::none && !solver_gives(name, SeamTerm::kNeeds))
     solver.fail("name", "the fabric is a tube (" + said_at(scene.fabric_where) + "), whose seam's stiff stitches only " +
-                            who + " takes in its step, not " + scene.solver.name);
-  if (!scene.seams.empty())
-    solver.fail("name", "the garment has seams (" + said_at(scene.seams.front().where) +
-                            "), whose stiff stitches only " + who + " takes in its step, not " + scene.solver.name);
+                            solvers_giving(SeamTerm::kNeeds) + stitches);
+  if (!scene.seams.empty() && !solver_gives(name, SeamTerm::kNeeds))
+    solver.fail("name", "the garment has seams (" + said_at(scene.seams.front().where) + "), whose stiff stitches only " +
+                            solvers_giving(SeamTerm::kNeeds) + stitches);
 }
 
 Scene read_scene(const toml::table& root, const std::string& path,
@@ -818,18 +825,18 @@ Scene read_scene(const toml::table& root, const std::string& path,
   TableReader solver = r.table("solver", false);
   read_solver(solver, &scene);
   scene.tolerance_where = solver.locate_key("tolerance_relative");
-  if (scene.wind.on && !solver_gives(scene.solver.name, SolverNeed::velocity))
+  if (scene.wind.on && !solver_gives(scene.solver.name, WindLoad::kNeeds))
     solver.fail("name", "the scene has wind (" + said_at(scene.wind.where) +
                             "), which depends on the fabric's velocity (seed 004): only solver " +
-                            solvers_giving(SolverNeed::velocity) + " models it, not " + scene.solver.name);
+                            solvers_giving(WindLoad::kNeeds) + " models it, not " + scene.solver.name);
   refuse_friction_without_stick(scene, solver);
   refuse_wrapped_edges_under_a_time_step(scene, solver);
   refuse_stiff_penalties_without_their_matrix(scene, solver);
   refuse_hysteresis_without_loading_branch(scene, solver);
   refuse_hysteresis_in_load_steps(scene);
-  if (scene.clamp.on && !solver_gives(scene.solver.name, SolverNeed::stick | SolverNeed::stiff_penalty))
+  if (scene.clamp.on && !solver_gives(scene.solver.name, ClampFrame::kNeeds))
     solver.fail("name", "the scene has a blank holder ([clamp], line " + std::to_string(scene.clamp.where.line) +
-                            "), whose friction only " + solvers_giving(SolverNeed::stick | SolverNeed::stiff_penalty) +
+                            "), whose friction only " + solvers_giving(ClampFrame::kNeeds) +
                             " models, not " + scene.solver.name);
   if (!solver.has("continuation_levels")) {
     scene.solver.continuation_levels = chosen_continuation_levels(scene);

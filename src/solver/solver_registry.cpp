@@ -30,18 +30,11 @@ void set_in_every_solver(SolverSpec& spec, Value StopSettings::*setting, Value v
   }
 }
 
-// What in `model` needs more than `gives`: its terms, by the names they describe themselves with,
-// and friction or wrapped edges, which are the solvers' own.
+// The parts of `model` that need more than `gives`, said one after another.
 std::string needing_more(const Model& model, SolverNeeds gives) {
   std::string names;
-  const auto add = [&](const std::string& name) { names += (names.empty() ? "" : ", ") + name; };
-  for (const auto& term : model.terms)
-    if (!gives.contains(term->needs())) {
-      const std::string said = term->describe(model);
-      add(said.substr(0, said.find(':')));
-    }
-  if (model.has_friction() && !gives.contains(SolverNeed::stick)) add("friction against the bodies");
-  if (model.wraps_edges() && !gives.contains(SolverNeed::no_time_step)) add("springs wrapped over edges");
+  for (const NeedingPart& part : model.parts_needing())
+    if (!gives.contains(part.needs)) names += (names.empty() ? "" : ", ") + part.name;
   return names;
 }
 

@@ -47,7 +47,9 @@ class ClampFrame final : public Term {
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override {
     friction_.add_stiffness(model, x, sink);
   }
-  SolverNeeds needs() const override { return SolverNeed::stick | SolverNeed::stiff_penalty; }
+  /// What it needs of its solver; the scene reader asks the same of a scene that would have it.
+  static constexpr SolverNeeds kNeeds = SolverNeed::stick | SolverNeed::stiff_penalty;
+  SolverNeeds needs() const override { return kNeeds; }
 
  private:
   std::vector<int> nodes_;

@@ -87,7 +87,9 @@ class EdgeContact final : public Term {
                             const Eigen::Vector3d& at) const override;
   /// w φ''(δ) J Jᵀ per reach, J = ∂δ/∂(a, b): the Gauss–Newton part, positive semi-definite.
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
-  SolverNeeds needs() const override { return SolverNeed::stiff_penalty; }
+  /// What it needs of its solver; the scene reader asks the same of a scene that would have it.
+  static constexpr SolverNeeds kNeeds = SolverNeed::stiff_penalty;
+  SolverNeeds needs() const override { return kNeeds; }
 
   /// How many edges the springs are kept from.
   int edge_count() const;

@@ -47,7 +47,9 @@ class HingeFriction final : public Term {
   /// (1 + √3)/(2·ε) in absolute value.
   void bound_stiffness(const Model& model, StiffnessBound& bound) const override;
   bool resists_bending() const override { return true; }
-  SolverNeeds needs() const override { return SolverNeed::loading_branch; }
+  /// What it needs of its solver; the scene reader asks the same of a scene that would have it.
+  static constexpr SolverNeeds kNeeds = SolverNeed::loading_branch;
+  SolverNeeds needs() const override { return kNeeds; }
 
  private:
   double hysteresis_warp_N_;

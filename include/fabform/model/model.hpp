@@ -18,6 +18,15 @@
 
 namespace fabform {
 
+/// Friction against a body needs stick; a spring wrapped over an edge, a step no time step bounds.
+constexpr SolverNeeds kBodyFrictionNeeds = SolverNeed::stick;
+constexpr SolverNeeds kWrappedEdgeNeeds = SolverNeed::no_time_step;
+
+struct NeedingPart {
+  std::string name;
+  SolverNeeds needs;
+};
+
 struct Model {
   /// A model of the fabric's springs alone: stretch (warp and weft), and shear and bend springs
   /// where the fabric has them (their tables, `shear` and `bend`, are then the caller's to set).
@@ -59,8 +68,11 @@ struct Model {
   bool has_friction() const;
   /// Whether some body lets springs wrap its edges (spring_path.hpp).
   bool wraps_edges() const;
-  /// What the model asks of the solver that solves it: its terms' needs, with stick where a
-  /// body has friction and a step no time step bounds where springs wrap a body's edges.
+  /// Each part of the model that asks something of its solver, with what it asks: its terms, by
+  /// the names they describe themselves with, friction against the bodies and springs wrapped
+  /// over their edges (the solvers' own, not terms).
+  std::vector<NeedingPart> parts_needing() const;
+  /// What the model asks of the solver that solves it: every part's needs.
   SolverNeeds solver_needs() const;
   /// K, the load steps in which the bodies travel; 0 when none moves.
   int load_steps() const;

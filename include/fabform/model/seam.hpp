@@ -73,7 +73,9 @@ class SeamTerm final : public Term {
   double node_energy_change(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const override;
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
   void bound_stiffness(const Model& model, StiffnessBound& bound) const override;
-  SolverNeeds needs() const override { return SolverNeed::stiff_penalty; }
+  /// What it needs of its solver; the scene reader asks the same of a scene that would have it.
+  static constexpr SolverNeeds kNeeds = SolverNeed::stiff_penalty;
+  SolverNeeds needs() const override { return kNeeds; }
 
  private:
   // Every stitch of every seam, and for each node the stitches it takes part in.

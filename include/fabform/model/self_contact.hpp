@@ -52,7 +52,9 @@ class SelfContact final : public Term {
   double energy(const Model& model, const Positions& x) const override;
   double node_energy_change(const Model& model, const Positions& x, int node, const Eigen::Vector3d& at) const override;
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
-  SolverNeeds needs() const override { return SolverNeed::stiff_penalty; }
+  /// What it needs of its solver; the scene reader asks the same of a scene that would have it.
+  static constexpr SolverNeeds kNeeds = SolverNeed::stiff_penalty;
+  SolverNeeds needs() const override { return kNeeds; }
 
  private:
   bool excluded(int node, int triangle) const;

@@ -37,7 +37,9 @@ class ShearFriction final : public Term {
   /// A·HG·(ρ''·g·gᵀ + ρ'·∂²γ), g = ∂γ/∂x; of ∂²γ = s·(∂²ε₁ − ∂²ε₂) only the diagonal whose part
   /// is positive semi-definite at the sign of ρ' is kept, so the sum is positive semi-definite.
   void add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const override;
-  SolverNeeds needs() const override { return SolverNeed::loading_branch; }
+  /// What it needs of its solver; the scene reader asks the same of a scene that would have it.
+  static constexpr SolverNeeds kNeeds = SolverNeed::loading_branch;
+  SolverNeeds needs() const override { return kNeeds; }
 
  private:
   double cell_energy(const Model& model, int face, const Positions& x, int moved, const Eigen::Vector3d& at) const;

@@ -70,7 +70,9 @@ class WindLoad final : public Term {
   /// held axis leaks into a free one through (n·v)·n.
   std::unique_ptr<StepDrag> drag(const Model& model, const Positions& x) const override;
   bool external() const override { return true; }
-  SolverNeeds needs() const override { return SolverNeed::velocity; }
+  /// What it needs of its solver; the scene reader asks the same of a scene that would have it.
+  static constexpr SolverNeeds kNeeds = SolverNeed::velocity;
+  SolverNeeds needs() const override { return kNeeds; }
 
  private:
   Wind wind_;
