@@ -76,7 +76,7 @@ MODES = ("punch", "die")
 RESOLUTIONS = (40, 60)
 ORIENTATIONS = {"asis": (0.0, 0.0, 0.0), "turned": (0.0, 0.0, 90.0), "tilted": (10.0, 0.0, 0.0)}
 FRICTIONS = (0.0, 0.3)
-VARIANT_KEYS = {"nodes": None, "wrap": "wrap_edges_deg", "edges": "edge_contact_deg"}
+VARIANT_KEYS = {"nodes": None, "wrap": "wrap_edges_deg", "edges": "edge_contact_deg", "springs": "spring_contact"}
 MARGIN_M = 0.03          # blank beyond the part's placed footprint, each side
 GAP_M = 0.002            # the punch's top under the blank at the start
 STEPS = 10
@@ -159,7 +159,9 @@ def scene_text(case: dict, variant_angle: float) -> str:
         f"translation_m = [{', '.join(f'{round(t, 9) + 0.0:.9g}' for t in translation)}]",
         f"friction = {case['mu']:g}",
     ]
-    if variant:
+    if variant == "spring_contact":
+        lines.append(f"{variant} = true")
+    elif variant:
         lines.append(f"{variant} = {variant_angle:g}")
     if case["mode"] == "punch":
         lines += ["", "[body.path]", f"translation_m = [0.0, 0.0, {travel:g}]", f"steps = {STEPS}",
@@ -292,7 +294,7 @@ def main() -> int:
         return 2
     resolutions = RESOLUTIONS[:1] if args.quick else RESOLUTIONS
     orientations = ["asis"] if args.quick else list(ORIENTATIONS)
-    angle = {"nodes": 0.0, "wrap": args.wrap_deg, "edges": args.edge_deg}
+    angle = {"nodes": 0.0, "wrap": args.wrap_deg, "edges": args.edge_deg, "springs": 0.0}
 
     (args.out / "scenes").mkdir(parents=True, exist_ok=True)
     cases = []

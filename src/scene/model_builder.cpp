@@ -16,6 +16,7 @@
 #include "fabform/model/seam.hpp"
 #include "fabform/model/self_contact.hpp"
 #include "fabform/model/edge_contact.hpp"
+#include "fabform/model/spring_contact.hpp"
 #include "fabform/model/force_scale.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_bending.hpp"
@@ -435,6 +436,18 @@ void add_edge_contact(const Scene& scene, Model* model) {
   model->terms.push_back(std::make_shared<EdgeContact>(*model, angles, stiffness));
 }
 
+void add_spring_contact(const Scene& scene, Model* model) {
+  std::vector<int> bodies;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    if (scene.bodies[b].spring_contact) bodies.push_back(static_cast<int>(b));
+  if (bodies.empty()) return;
+  const double stiffness = SpringContact::default_stiffness(*model);
+  if (!(stiffness > 0.0))
+    throw InputError(scene.warp_where, "spring contact needs the fabric's stiffness at rest, and its warp and weft "
+                                       "tables start slack");
+  model->terms.push_back(std::make_shared<SpringContact>(*model, bodies, stiffness));
+}
+
 void add_pressure(const Scene& scene, Model* model) {
   if (!scene.pressure.on) return;
   const Eigen::Vector3d reference = pressure_reference(scene, *model);
@@ -544,6 +557,7 @@ Model build_model(const Scene& scene, const Model* placed_from) {
   perturb_start(scene.perturbation, model.locks, &model.start);  // after every lock is known
   add_pressure(scene, &model);
   add_edge_contact(scene, &model);
+  add_spring_contact(scene, &model);
   add_seams(scene, &model);
   add_self_contact(scene, &model);
   check_drape_support(scene, model);

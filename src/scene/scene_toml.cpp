@@ -11,6 +11,7 @@
 
 #include "fabform/model/clamp_frame.hpp"
 #include "fabform/model/edge_contact.hpp"
+#include "fabform/model/spring_contact.hpp"
 #include "fabform/model/gravity.hpp"
 #include "fabform/model/hinge_friction.hpp"
 #include "fabform/model/seam.hpp"
@@ -384,11 +385,18 @@ BodySpec read_body(TableReader r, const std::string& scene_path, std::size_t ind
       r.fail("edge_contact_deg", "a body's edges are either wrapped (wrap_edges_deg) or kept out of the springs "
                                  "(edge_contact_deg), not both");
   }
+  if (r.has("spring_contact")) {
+    body.spring_contact = r.flag("spring_contact", false);
+    body.spring_contact_where = r.locate_key("spring_contact");
+    if (body.spring_contact && (body.wrap_edges_deg > 0.0 || body.edge_contact_deg > 0.0))
+      r.fail("spring_contact", "a body keeps springs out along their length (spring_contact) or wraps them over its "
+                               "edges (wrap_edges_deg) or keeps them from under its edges (edge_contact_deg): one");
+  }
   std::string field;
   if (const std::string why = body.placement.invalid_reason(&field); !why.empty()) r.fail(field, why);
   if (r.has("path")) read_path(r.table("path", false), &body);
   r.reject_unknown({"name", "mesh", "units", "scale", "rotation_deg", "translation_m", "friction", "wrap_edges_deg",
-                    "edge_contact_deg", "path"});
+                    "edge_contact_deg", "spring_contact", "path"});
   return body;
 }
 
@@ -778,6 +786,12 @@ void refuse_stiff_penalties_without_their_matrix(const Scene& scene, TableReader
       const std::string who = solvers_giving(EdgeContact::kNeeds);
       solver.fail("name", "body '" + body.name + "' keeps springs from under its edges (" +
                               said_at(body.edge_contact_where) + "), a penalty only " + who + " carries: use " + who);
+    }
+  for (const BodySpec& body : scene.bodies)
+    if (body.spring_contact && !solver_gives(name, SpringContact::kNeeds)) {
+      const std::string who = solvers_giving(SpringContact::kNeeds);
+      solver.fail("name", "body '" + body.name + "' keeps springs out along their length (" +
+                              said_at(body.spring_contact_where) + "), a penalty only " + who + " carries: use " + who);
     }
   if (scene.self_contact.on && !solver_gives(name, SelfContact::kNeeds))
     solver.fail("name", "the scene has self-contact ([self_contact], line " + std::to_string(scene.self_contact.where.line) +

@@ -114,6 +114,14 @@ double first_order_change(const std::vector<Eigen::Vector3d>& forces,
   return change;
 }
 
+// Whether every term lets a step carry the fabric from `from` to `to` at once (Term::admits_step).
+bool every_term_admits(const Model& model, const std::vector<Eigen::Vector3d>& from,
+                       const std::vector<Eigen::Vector3d>& to) {
+  for (const auto& term : model.terms)
+    if (!term->admits_step(model, from, to)) return false;
+  return true;
+}
+
 // The Newton step from a state: what the line search moves along, and the estimate of the
 // state's distance from the rest.
 struct Proposal {
@@ -258,6 +266,7 @@ class NewtonStep {
     double alpha = 1.0;
     for (int t = 0; t <= options_.max_backtracks; ++t, alpha *= 0.5) {
       SolverState trial = moved(steps, alpha);
+      if (!every_term_admits(model_, state_.x, trial.x)) continue;
       const double change = energy_change(model_, state_.x, baseline, trial.x) +
                             (friction.empty() ? 0.0 : friction.energy(model_, trial.x) - friction_before);
       const double predicted = first_order_change(forces, state_.x, trial.x);

@@ -211,7 +211,8 @@ SceneText base_scene(Base base) {
              {"rotation_deg", "[0.0, 0.0, 90.0]"},
              {"translation_m", "[0.05, 0.05, 0.0]"},
              {"friction", "0.0"},
-             {"edge_contact_deg", "0.0"}}},
+             {"edge_contact_deg", "0.0"},
+             {"spring_contact", "false"}}},
            {"constraint.0", "[[constraint]]", {{"nodes", "\"perimeter\""}, {"axes", "\"xyz\""}}},
            {"constraint.1", "[[constraint]]", {{"node", "[2, 2]"}, {"axes", "\"z\""}}},
            {"constraint.2", "[[constraint]]", {{"nearest_m", "[0.025, 0.025]"}, {"axes", "\"xy\""}}},
@@ -528,6 +529,10 @@ const std::vector<KeyRow>& key_table() {
       // Every base but the arc wraps the body's edges, which edge contact excludes.
       {"body.0.edge_contact_deg",        T::number,    lift, A,   R,  A,   R,   _,    "",
        {{"with_wrapped_edges", "2.0", R, kSame}, {"half_turn", "180.0", R, kSame}}},
+      // Every base but the arc wraps the body's edges, which spring contact excludes.
+      {"body.0.spring_contact",          T::only_extras, lift, _, _,  _,   _,   _,    "",
+       {{"false", "false", A, kSame}, {"missing", kRemove, A, kSame}, {"with_wrapped_edges", "true", R, kSame},
+        {"a_number", "1", R, kSame}, {"a_string", "\"yes\"", R, kSame}}},
       // The body travels 4 mm and turns 10° in four load steps; without a path it stays put.
       {"body.0.path",                    T::only_extras, travel, _, _,  _,   _,   _,    "",
        {{"missing", kRemove, A, kSame}}},

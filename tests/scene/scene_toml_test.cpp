@@ -179,6 +179,24 @@ TEST(LoadScene, ToleranceIsInNewtonsOrRelativeNotBoth) {
   }
 }
 
+// A body that keeps the springs out along their length: a penalty only newton carries, named by
+// its key and line when another solver is asked for.
+TEST(LoadScene, SpringContactIsReadAndNeedsNewton) {
+  const std::string body = "[[body]]\nname = \"part\"\nmesh = \"part.obj\"\nunits = \"m\"\nspring_contact = true\n";
+  std::string text = kMinimal;
+  text.replace(text.find("[solver]\n"), 9, body + "[solver]\nname = \"newton\"\n");
+  test::TempDir dir;
+  const Scene scene = load_scene(dir.write("scene.toml", text));
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  EXPECT_TRUE(scene.bodies[0].spring_contact);
+  EXPECT_EQ(scene.bodies[0].spring_contact_where.line, 12);
+  text.replace(text.find("name = \"newton\""), 15, "name = \"relax\"");
+  const InputError e = load_error(text);
+  EXPECT_EQ(e.where().key, "solver.name") << e.what();
+  EXPECT_NE(std::string(e.what()).find("body 'part' keeps springs out along their length (line 12), a penalty only newton carries"),
+            std::string::npos) << e.what();
+}
+
 // A blank holder gripping a frame round the edge: its width, force and friction, held for newton.
 TEST(LoadScene, ReadsAClampFrame) {
   std::string text = kMinimal;

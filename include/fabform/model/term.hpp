@@ -105,6 +105,13 @@ class Term {
     return nullptr;
   }
 
+  /// Whether a solver's step may carry the fabric from `from` to `to` at once. A stiff contact
+  /// penalty refuses a step that would take a spring deep into a body in one go (say through a
+  /// thin wall, which no penalty undoes); the step is then shortened.
+  virtual bool admits_step(const Model& /*model*/, const Positions& /*from*/, const Positions& /*to*/) const {
+    return true;
+  }
+
   /// An external load (its potential is the work against it), not energy the fabric stores.
   virtual bool external() const { return false; }
 

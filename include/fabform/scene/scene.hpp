@@ -38,6 +38,10 @@ struct BodySpec {
   // least this much (degrees), by a smooth penalty (edge_contact.hpp); 0, the default: none.
   double edge_contact_deg = 0.0;
   SourceLocation edge_contact_where;
+  // The fabric's springs are kept out of the body along their length, by a penalty on how deep
+  // points along them lie inside it (spring_contact.hpp); false, the default: the nodes alone.
+  bool spring_contact = false;
+  SourceLocation spring_contact_where;
   ToolPath path;               // [body.path]: its travel in load steps (steps 0: it stays put)
   bool pivot_given = false;    // else the turn is about the placed mesh's bounding box's centre
   SourceLocation steps_where;  // path.steps, for messages

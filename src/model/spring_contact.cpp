@@ -1,0 +1,198 @@
+#include "fabform/model/spring_contact.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "fabform/geometry/nearby_queries.hpp"
+#include "fabform/model/force_scale.hpp"
+#include "fabform/model/model.hpp"
+#include "model/sum_in_index_order.hpp"
+
+namespace fabform {
+namespace {
+
+// κ over the softest spring's stiffness at rest (default_stiffness says why so stiff).
+constexpr double kStiffnessRatio = 1e5;
+// The penalty's stiffness rises from 0 to κ over this share of the mean spring's rest length of
+// depth, so that Newton's matrix changes continuously as a spring reaches into a body.
+constexpr double kOnsetShare = 0.02;
+// Below this share of a spring's length a sample lies on the surface: its direction into the
+// body is the surface's normal, not the direction to the closest point.
+constexpr double kOnSurfaceOfSpring = 1e-12;
+
+bool stretches_surface(SpringKind kind) { return kind != SpringKind::bend; }
+
+double mean_surface_spring_length(const Fabric& fabric) {
+  double sum = 0.0;
+  int count = 0;
+  for (const Spring& s : fabric.springs())
+    if (s.kind == SpringKind::warp || s.kind == SpringKind::weft) sum += s.rest_length, ++count;
+  return count > 0 ? sum / count : 0.0;
+}
+
+// φ(δ), φ'(δ), φ''(δ) of spring_contact.hpp.
+struct Onset {
+  double value, slope, curvature;
+};
+Onset onset_penalty(double depth, double stiffness, double onset) {
+  if (depth < onset)
+    return {stiffness * depth * depth * depth / (6.0 * onset), stiffness * depth * depth / (2.0 * onset),
+            stiffness * depth / onset};
+  return {stiffness * (0.5 * depth * depth - 0.5 * onset * depth + onset * onset / 6.0),
+          stiffness * (depth - 0.5 * onset), stiffness};
+}
+
+}  // namespace
+
+SpringContact::SpringContact(const Model& model, std::vector<int> bodies, double stiffness_N_m)
+    : bodies_(std::move(bodies)),
+      stiffness_N_m_(stiffness_N_m),
+      onset_m_(kOnsetShare * mean_surface_spring_length(model.fabric)) {
+  if (!(std::isfinite(stiffness_N_m) && stiffness_N_m > 0.0))
+    throw std::invalid_argument("spring contact: the penalty's stiffness must be positive and finite");
+  for (const int b : bodies_)
+    if (b < 0 || b >= static_cast<int>(model.bodies.size()))
+      throw std::invalid_argument("spring contact: no body " + std::to_string(b));
+}
+
+double SpringContact::default_stiffness(const Model& model) {
+  const double length = mean_surface_spring_length(model.fabric);
+  const double scale = spring_force_scale_N(model);
+  return length > 0.0 && scale > 0.0 ? kStiffnessRatio * scale / length : 0.0;
+}
+
+std::string SpringContact::describe(const Model& model) const {
+  std::string names;
+  for (const int b : bodies_) names += (names.empty() ? "" : ", ") + model.bodies[static_cast<std::size_t>(b)].name();
+  char text[160];
+  std::snprintf(text, sizeof text, " (%d points a spring); penalty stiffness %.6g N/m", kSamples, stiffness_N_m_);
+  return "spring contact: warp, weft and shear springs kept out of " + names + text;
+}
+
+std::vector<SampleDepth> SpringContact::samples_inside(NearbyQueries& queries, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  std::vector<SampleDepth> inside;
+  const double length = (b - a).norm();
+  if (!a.allFinite() || !b.allFinite()) return inside;  // a broken state, being measured
+  for (const int body : bodies_) {
+    // The signed distance changes no faster than the point moves, so a segment whose ends' distances
+    // add up to more than its length has no point inside.
+    if (queries.clearance_bound(body, a) + queries.clearance_bound(body, b) > length) continue;
+    if (queries.closest(body, a).signed_distance + queries.closest(body, b).signed_distance > length) continue;
+    for (int i = 0; i < kSamples; ++i) {
+      const double t = (i + 0.5) / kSamples;
+      const Eigen::Vector3d p = a + t * (b - a);
+      const SurfacePoint q = queries.closest(body, p);
+      if (!(q.signed_distance < 0.0)) continue;
+      const Eigen::Vector3d inward =
+          q.distance > kOnSurfaceOfSpring * length ? Eigen::Vector3d((p - q.point) / q.distance) : Eigen::Vector3d(-q.normal);
+      inside.push_back({body, t, -q.signed_distance, inward});
+    }
+  }
+  return inside;
+}
+
+SpringContact::Penalty SpringContact::penalty(const std::vector<SampleDepth>& samples) const {
+  Penalty total;
+  for (const SampleDepth& s : samples) {
+    const Onset phi = onset_penalty(s.depth, stiffness_N_m_, onset_m_);
+    total.energy += phi.value / kSamples;
+    total.gradient_a += (phi.slope / kSamples * (1.0 - s.along)) * s.inward;
+    total.gradient_b += (phi.slope / kSamples * s.along) * s.inward;
+  }
+  return total;
+}
+
+std::vector<std::vector<SampleDepth>> SpringContact::every_spring(const Model& model, const Positions& x) const {
+  const std::vector<Spring>& springs = model.fabric.springs();
+  std::vector<std::vector<SampleDepth>> samples(springs.size());
+  for_each_nearby(static_cast<int>(springs.size()), model.bodies, [&](int i, NearbyQueries& queries) {
+    const Spring& s = springs[static_cast<std::size_t>(i)];
+    if (stretches_surface(s.kind))
+      samples[static_cast<std::size_t>(i)] =
+          samples_inside(queries, x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)]);
+  });
+  return samples;
+}
+
+Eigen::Vector3d SpringContact::force_at(const Model& model, const Positions& x, int node,
+                                        const Eigen::Vector3d& at) const {
+  NearbyQueries queries(model.bodies);
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  for (const int s : model.fabric.springs_at(node)) {
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
+    if (!stretches_surface(spring.kind)) continue;
+    const bool is_a = spring.a == node;
+    const Eigen::Vector3d& a = is_a ? at : x[static_cast<std::size_t>(spring.a)];
+    const Eigen::Vector3d& b = is_a ? x[static_cast<std::size_t>(spring.b)] : at;
+    const Penalty p = penalty(samples_inside(queries, a, b));
+    force -= is_a ? p.gradient_a : p.gradient_b;
+  }
+  return force;
+}
+
+void SpringContact::add_forces(const Model& model, const Positions& x, std::vector<Eigen::Vector3d>& forces) const {
+  const std::vector<Spring>& springs = model.fabric.springs();
+  const std::vector<std::vector<SampleDepth>> samples = every_spring(model, x);
+  for (std::size_t i = 0; i < springs.size(); ++i) {
+    if (samples[i].empty()) continue;
+    const Penalty p = penalty(samples[i]);
+    forces[static_cast<std::size_t>(springs[i].a)] -= p.gradient_a;
+    forces[static_cast<std::size_t>(springs[i].b)] -= p.gradient_b;
+  }
+}
+
+double SpringContact::energy(const Model& model, const Positions& x) const {
+  const std::vector<std::vector<SampleDepth>> samples = every_spring(model, x);
+  return sum_in_index_order(static_cast<std::ptrdiff_t>(samples.size()), [&](std::ptrdiff_t i) {
+    return samples[static_cast<std::size_t>(i)].empty() ? 0.0 : penalty(samples[static_cast<std::size_t>(i)]).energy;
+  });
+}
+
+double SpringContact::node_energy_change(const Model& model, const Positions& x, int node,
+                                         const Eigen::Vector3d& at) const {
+  NearbyQueries queries(model.bodies);
+  double change = 0.0;
+  for (const int s : model.fabric.springs_at(node)) {
+    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
+    if (!stretches_surface(spring.kind)) continue;
+    const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
+    const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
+    const double before = penalty(samples_inside(queries, a, b)).energy;
+    const double after = penalty(spring.a == node ? samples_inside(queries, at, b)
+                                                  : samples_inside(queries, a, at)).energy;
+    change += after - before;
+  }
+  return change;
+}
+
+bool SpringContact::admits_step(const Model& model, const Positions& from, const Positions& to) const {
+  const std::vector<std::vector<SampleDepth>> before = every_spring(model, from);
+  const std::vector<std::vector<SampleDepth>> after = every_spring(model, to);
+  const auto depth_before = [&](std::size_t spring, const SampleDepth& sample) {
+    for (const SampleDepth& s : before[spring])
+      if (s.body == sample.body && s.along == sample.along) return s.depth;
+    return 0.0;
+  };
+  for (std::size_t i = 0; i < after.size(); ++i)
+    for (const SampleDepth& sample : after[i])
+      if (sample.depth - depth_before(i, sample) > onset_m_) return false;
+  return true;
+}
+
+void SpringContact::add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const {
+  const std::vector<Spring>& springs = model.fabric.springs();
+  const std::vector<std::vector<SampleDepth>> samples = every_spring(model, x);
+  sink.add_each(springs.size(), [&](std::size_t i, StiffnessSink& part) {
+    for (const SampleDepth& s : samples[i]) {
+      const double curvature = onset_penalty(s.depth, stiffness_N_m_, onset_m_).curvature / kSamples;
+      const Eigen::Matrix3d nnT = curvature * s.inward * s.inward.transpose();
+      const double t = s.along;
+      part.add(springs[i].a, springs[i].a, (1.0 - t) * (1.0 - t) * nnT);
+      part.add(springs[i].b, springs[i].b, t * t * nnT);
+      part.add(springs[i].a, springs[i].b, t * (1.0 - t) * nnT);
+    }
+  });
+}
+
+}  // namespace fabform
