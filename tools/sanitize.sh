@@ -36,7 +36,7 @@ SLOW=(
   '*ConvergesOnTheBodyWithoutEnteringIt/mold*' '*ConvergesOnTheBodyWithoutEnteringIt/dome*'
   '*ConvergesOnTheBodyWithoutEnteringIt/pin' '*ConvergesOnTheBodyWithoutEnteringIt/cusick*'
   '*ConvergesOnTheBodyWithoutEnteringIt/fold' # ShippedFold runs the same scene
-  '*ShippedCadPunch*' '*ShippedCadDie*' '*ShippedCup.*' '*ReproducibleForming.*'
+  '*ShippedCadPunch*' '*ShippedCadDie*' '*ShippedCadVacuum*' '*ShippedCup.*' '*ReproducibleForming.*'
   # mesh repair over the whole corpus (the other MeshRepairProperties repair every mesh of it)
   '*KeepsTheSurfaceAndTheBoundingBox*' '*TheWrittenFileIsWhatTheReportPromised*'
   '*RepairingTwiceIsRepairingOnce*'
