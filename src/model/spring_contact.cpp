@@ -70,15 +70,21 @@ std::string SpringContact::describe(const Model& model) const {
   return "spring contact: warp, weft and shear springs kept out of " + names + text;
 }
 
-std::vector<SampleDepth> SpringContact::samples_inside(NearbyQueries& queries, const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+std::vector<SampleDepth> SpringContact::samples_inside(NearbyQueries& queries, const Eigen::Vector3d& a,
+                                                       const Eigen::Vector3d& b, const double* ends_apart) const {
   std::vector<SampleDepth> inside;
   const double length = (b - a).norm();
   if (!a.allFinite() || !b.allFinite()) return inside;  // a broken state, being measured
-  for (const int body : bodies_) {
+  for (std::size_t listed = 0; listed < bodies_.size(); ++listed) {
+    const int body = bodies_[listed];
     // The signed distance changes no faster than the point moves, so a segment whose ends' distances
     // add up to more than its length has no point inside.
-    if (queries.clearance_bound(body, a) + queries.clearance_bound(body, b) > length) continue;
-    if (queries.closest(body, a).signed_distance + queries.closest(body, b).signed_distance > length) continue;
+    if (ends_apart) {
+      if (ends_apart[listed] > length) continue;
+    } else if (queries.clearance_bound(body, a) + queries.clearance_bound(body, b) > length ||
+               queries.closest(body, a).signed_distance + queries.closest(body, b).signed_distance > length) {
+      continue;
+    }
     for (int i = 0; i < kSamples; ++i) {
       const double t = (i + 0.5) / kSamples;
       const Eigen::Vector3d p = a + t * (b - a);
@@ -104,13 +110,24 @@ SpringContact::Penalty SpringContact::penalty(const std::vector<SampleDepth>& sa
 }
 
 std::vector<std::vector<SampleDepth>> SpringContact::every_spring(const Model& model, const Positions& x) const {
+  // Each node's signed distance to each listed body, once, rather than twice a spring.
+  const std::size_t listed = bodies_.size();
+  std::vector<double> distance(x.size() * listed);
+  for_each_nearby(static_cast<int>(x.size()), model.bodies, [&](int k, NearbyQueries& queries) {
+    const auto node = static_cast<std::size_t>(k);
+    for (std::size_t b = 0; b < listed; ++b)
+      distance[node * listed + b] = x[node].allFinite() ? queries.closest(bodies_[b], x[node]).signed_distance : 0.0;
+  });
   const std::vector<Spring>& springs = model.fabric.springs();
   std::vector<std::vector<SampleDepth>> samples(springs.size());
   for_each_nearby(static_cast<int>(springs.size()), model.bodies, [&](int i, NearbyQueries& queries) {
     const Spring& s = springs[static_cast<std::size_t>(i)];
-    if (stretches_surface(s.kind))
-      samples[static_cast<std::size_t>(i)] =
-          samples_inside(queries, x[static_cast<std::size_t>(s.a)], x[static_cast<std::size_t>(s.b)]);
+    if (!stretches_surface(s.kind)) return;
+    std::vector<double> ends_apart(listed);
+    for (std::size_t b = 0; b < listed; ++b)
+      ends_apart[b] = distance[static_cast<std::size_t>(s.a) * listed + b] + distance[static_cast<std::size_t>(s.b) * listed + b];
+    samples[static_cast<std::size_t>(i)] = samples_inside(queries, x[static_cast<std::size_t>(s.a)],
+                                                          x[static_cast<std::size_t>(s.b)], ends_apart.data());
   });
   return samples;
 }
@@ -166,18 +183,33 @@ double SpringContact::node_energy_change(const Model& model, const Positions& x,
   return change;
 }
 
-bool SpringContact::admits_step(const Model& model, const Positions& from, const Positions& to) const {
-  const std::vector<std::vector<SampleDepth>> before = every_spring(model, from);
-  const std::vector<std::vector<SampleDepth>> after = every_spring(model, to);
-  const auto depth_before = [&](std::size_t spring, const SampleDepth& sample) {
-    for (const SampleDepth& s : before[spring])
+// The samples inside at the step's start, against which each trial's are measured.
+class SpringContact::DepthGrowth final : public StepCheck {
+ public:
+  DepthGrowth(const SpringContact& term, std::vector<std::vector<SampleDepth>> before)
+      : term_(term), before_(std::move(before)) {}
+
+  bool admits(const Model& model, const Positions& to) const override {
+    const std::vector<std::vector<SampleDepth>> after = term_.every_spring(model, to);
+    for (std::size_t i = 0; i < after.size(); ++i)
+      for (const SampleDepth& sample : after[i])
+        if (sample.depth - depth_before(i, sample) > term_.onset_m_) return false;
+    return true;
+  }
+
+ private:
+  double depth_before(std::size_t spring, const SampleDepth& sample) const {
+    for (const SampleDepth& s : before_[spring])
       if (s.body == sample.body && s.along == sample.along) return s.depth;
     return 0.0;
-  };
-  for (std::size_t i = 0; i < after.size(); ++i)
-    for (const SampleDepth& sample : after[i])
-      if (sample.depth - depth_before(i, sample) > onset_m_) return false;
-  return true;
+  }
+
+  const SpringContact& term_;
+  std::vector<std::vector<SampleDepth>> before_;
+};
+
+std::unique_ptr<StepCheck> SpringContact::step_check(const Model& model, const Positions& from) const {
+  return std::make_unique<DepthGrowth>(*this, every_spring(model, from));
 }
 
 void SpringContact::add_stiffness(const Model& model, const Positions& x, StiffnessSink& sink) const {

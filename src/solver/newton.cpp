@@ -114,12 +114,17 @@ double first_order_change(const std::vector<Eigen::Vector3d>& forces,
   return change;
 }
 
-// Whether every term lets a step carry the fabric from `from` to `to` at once (Term::admits_step).
-bool every_term_admits(const Model& model, const std::vector<Eigen::Vector3d>& from,
-                       const std::vector<Eigen::Vector3d>& to) {
+// The terms' checks of the steps from `from` (Term::step_check); the terms that let any step take none.
+std::vector<std::unique_ptr<StepCheck>> step_checks(const Model& model, const std::vector<Eigen::Vector3d>& from) {
+  std::vector<std::unique_ptr<StepCheck>> checks;
   for (const auto& term : model.terms)
-    if (!term->admits_step(model, from, to)) return false;
-  return true;
+    if (auto check = term->step_check(model, from)) checks.push_back(std::move(check));
+  return checks;
+}
+
+bool every_check_admits(const Model& model, const std::vector<std::unique_ptr<StepCheck>>& checks,
+                        const std::vector<Eigen::Vector3d>& to) {
+  return std::all_of(checks.begin(), checks.end(), [&](const auto& check) { return check->admits(model, to); });
 }
 
 // The Newton step from a state: what the line search moves along, and the estimate of the
@@ -263,10 +268,11 @@ class NewtonStep {
     const EnergyBaseline baseline = energy_baseline(model_, state_.x);
     const double noise = 1e-11 * std::abs(baseline.stored);
     const double friction_before = friction.empty() ? 0.0 : friction.energy(model_, state_.x);
+    const std::vector<std::unique_ptr<StepCheck>> checks = step_checks(model_, state_.x);
     double alpha = 1.0;
     for (int t = 0; t <= options_.max_backtracks; ++t, alpha *= 0.5) {
       SolverState trial = moved(steps, alpha);
-      if (!every_term_admits(model_, state_.x, trial.x)) continue;
+      if (!every_check_admits(model_, checks, trial.x)) continue;
       const double change = energy_change(model_, state_.x, baseline, trial.x) +
                             (friction.empty() ? 0.0 : friction.energy(model_, trial.x) - friction_before);
       const double predicted = first_order_change(forces, state_.x, trial.x);

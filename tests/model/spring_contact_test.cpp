@@ -179,12 +179,12 @@ TEST(SpringContact, AStepThatCarriesASpringDeepInAtOnceIsRefused) {
   const SpringContact term(model, {0}, kStiffness);
   std::vector<Eigen::Vector3d> lifted = resting;
   for (Eigen::Vector3d& p : lifted) p.z() += 0.003;
-  EXPECT_FALSE(term.admits_step(model, lifted, resting));
-  EXPECT_TRUE(term.admits_step(model, resting, resting));
-  EXPECT_TRUE(term.admits_step(model, lifted, lifted));
+  EXPECT_FALSE(term.step_check(model, lifted)->admits(model, resting));
+  EXPECT_TRUE(term.step_check(model, resting)->admits(model, resting));
+  EXPECT_TRUE(term.step_check(model, lifted)->admits(model, lifted));
   std::vector<Eigen::Vector3d> nearer = resting;
   for (Eigen::Vector3d& p : nearer) p.z() += 0.0001;
-  EXPECT_TRUE(term.admits_step(model, nearer, resting));
+  EXPECT_TRUE(term.step_check(model, nearer)->admits(model, resting));
 }
 
 TEST(SpringContact, OnlyNewtonCarriesItAndABadStiffnessIsRefused) {

@@ -62,7 +62,7 @@ class SpringContact final : public Term {
   /// Refuses a step that takes a sample deeper into a body by more than the penalty's onset h at
   /// once: the step's matrix knew nothing of a body the sample had not reached, and a spring
   /// carried through a thin wall (a rib, a fin) in one step is held there, not pushed back.
-  bool admits_step(const Model& model, const Positions& from, const Positions& to) const override;
+  std::unique_ptr<StepCheck> step_check(const Model& model, const Positions& from) const override;
   /// What it needs of its solver; the scene reader asks the same of a scene that would have it.
   static constexpr SolverNeeds kNeeds = SolverNeed::stiff_penalty;
   SolverNeeds needs() const override { return kNeeds; }
@@ -73,12 +73,15 @@ class SpringContact final : public Term {
     Eigen::Vector3d gradient_a = Eigen::Vector3d::Zero();
     Eigen::Vector3d gradient_b = Eigen::Vector3d::Zero();
   };
-  /// The samples of segment a–b inside the bodies.
-  std::vector<SampleDepth> samples_inside(NearbyQueries& queries, const Eigen::Vector3d& a,
-                                          const Eigen::Vector3d& b) const;
+  /// The samples of segment a–b inside the bodies; `ends_apart`, when given, holds for each listed
+  /// body the sum of a's and b's signed distances to it (else they are looked up).
+  std::vector<SampleDepth> samples_inside(NearbyQueries& queries, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                          const double* ends_apart = nullptr) const;
   Penalty penalty(const std::vector<SampleDepth>& samples) const;
   /// Each surface spring's samples inside at x (none for a bending spring), in spring order.
   std::vector<std::vector<SampleDepth>> every_spring(const Model& model, const Positions& x) const;
+
+  class DepthGrowth;
 
   std::vector<int> bodies_;
   double stiffness_N_m_;

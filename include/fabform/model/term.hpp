@@ -64,6 +64,14 @@ class StepDrag {
                                 const NodeFreedom& freedom) const = 0;
 };
 
+/// Which moves of the fabric from one state a solver's step may make at once (Term::step_check).
+class StepCheck {
+ public:
+  virtual ~StepCheck() = default;
+  /// Whether the step may carry the fabric from the checked state to `to` at once.
+  virtual bool admits(const Model& model, const Positions& to) const = 0;
+};
+
 class Term {
  public:
   virtual ~Term() = default;
@@ -105,11 +113,11 @@ class Term {
     return nullptr;
   }
 
-  /// Whether a solver's step may carry the fabric from `from` to `to` at once. A stiff contact
-  /// penalty refuses a step that would take a spring deep into a body in one go (say through a
-  /// thin wall, which no penalty undoes); the step is then shortened.
-  virtual bool admits_step(const Model& /*model*/, const Positions& /*from*/, const Positions& /*to*/) const {
-    return true;
+  /// Which steps from `from` the term lets a solver take at once; null when it lets any. A stiff
+  /// contact penalty refuses a step that would take a spring deep into a body in one go (say
+  /// through a thin wall, which no penalty undoes); the step is then shortened.
+  virtual std::unique_ptr<StepCheck> step_check(const Model& /*model*/, const Positions& /*from*/) const {
+    return nullptr;
   }
 
   /// An external load (its potential is the work against it), not energy the fabric stores.
