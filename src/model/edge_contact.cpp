@@ -12,7 +12,7 @@
 
 #include <Eigen/Geometry>
 
-#include "fabform/model/force_scale.hpp"
+#include "fabform/model/contact_penalty.hpp"
 #include "fabform/model/model.hpp"
 #include "fabform/thread_count.hpp"
 #include "model/sum_in_index_order.hpp"
@@ -33,16 +33,6 @@ constexpr double kParallelShare = 1e-9;
 
 double smoothstep(double u) { return u * u * (3.0 - 2.0 * u); }
 double smoothstep_slope(double u) { return 6.0 * u * (1.0 - u); }
-
-bool stretches_surface(SpringKind kind) { return kind != SpringKind::bend; }
-
-double mean_surface_spring_length(const Fabric& fabric) {
-  double sum = 0.0;
-  int count = 0;
-  for (const Spring& s : fabric.springs())
-    if (s.kind == SpringKind::warp || s.kind == SpringKind::weft) sum += s.rest_length, ++count;
-  return count > 0 ? sum / count : 0.0;
-}
 
 using CellKey = std::int64_t;
 
@@ -149,17 +139,14 @@ std::optional<EdgeReach> reach_under_edge(const SharpEdge& edge, const Eigen::Ve
 }
 
 EdgePenalty edge_penalty(const EdgeReach& reach, double stiffness_N_m, double onset_m) {
-  const double k = stiffness_N_m, w = reach.weight, delta = reach.depth, s = reach.along, h = onset_m;
-  // φ(δ) = κδ³/(6h) up to h, then κ(δ²/2 − hδ/2 + h²/6): its second derivative rises from 0 to κ.
-  const bool onset = delta < h;
-  const double phi = onset ? k * delta * delta * delta / (6.0 * h) : k * (0.5 * delta * delta - 0.5 * h * delta + h * h / 6.0);
-  const double slope = onset ? k * delta * delta / (2.0 * h) : k * (delta - 0.5 * h);
+  const double w = reach.weight, s = reach.along;
+  const OnsetPenalty phi = onset_penalty(reach.depth, stiffness_N_m, onset_m);
   EdgePenalty penalty;
-  penalty.energy = w * phi;
-  penalty.curvature = w * (onset ? k * delta / h : k);
+  penalty.energy = w * phi.value;
+  penalty.curvature = w * phi.curvature;
   // ∂δ/∂a = −(1 − s) g, ∂δ/∂b = −s g (edge_contact.hpp).
-  penalty.gradient_a = phi * reach.weight_gradient_a - w * slope * (1.0 - s) * reach.direction;
-  penalty.gradient_b = phi * reach.weight_gradient_b - w * slope * s * reach.direction;
+  penalty.gradient_a = phi.value * reach.weight_gradient_a - w * phi.slope * (1.0 - s) * reach.direction;
+  penalty.gradient_b = phi.value * reach.weight_gradient_b - w * phi.slope * s * reach.direction;
   return penalty;
 }
 
@@ -241,11 +228,7 @@ EdgeContact::EdgeContact(const Model& model, const std::vector<double>& angles_d
 
 EdgeContact::~EdgeContact() = default;
 
-double EdgeContact::default_stiffness(const Model& model) {
-  const double length = mean_surface_spring_length(model.fabric);
-  const double scale = spring_force_scale_N(model);
-  return length > 0.0 && scale > 0.0 ? kStiffnessRatio * scale / length : 0.0;
-}
+double EdgeContact::default_stiffness(const Model& model) { return contact_stiffness(model, kStiffnessRatio); }
 
 int EdgeContact::edge_count() const {
   int count = 0;
@@ -318,15 +301,11 @@ EdgeContact::SpringPenalty EdgeContact::spring_penalty(const Model& model, int s
 Eigen::Vector3d EdgeContact::force_at(const Model& model, const Positions& x, int node,
                                       const Eigen::Vector3d& at) const {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  for (const int s : model.fabric.springs_at(node)) {
-    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
-    if (!stretches_surface(spring.kind)) continue;
-    const bool is_a = spring.a == node;
-    const Eigen::Vector3d& a = is_a ? at : x[static_cast<std::size_t>(spring.a)];
-    const Eigen::Vector3d& b = is_a ? x[static_cast<std::size_t>(spring.b)] : at;
+  for_each_surface_spring_at(model.fabric, x, node, at,
+                             [&](int s, const Eigen::Vector3d& a, const Eigen::Vector3d& b, bool is_a) {
     const SpringPenalty p = spring_penalty(model, s, a, b);
     force -= is_a ? p.gradient_a : p.gradient_b;
-  }
+  });
   return force;
 }
 
@@ -343,14 +322,13 @@ double EdgeContact::energy(const Model& model, const Positions& x) const {
 double EdgeContact::node_energy_change(const Model& model, const Positions& x, int node,
                                        const Eigen::Vector3d& at) const {
   double change = 0.0;
-  for (const int s : model.fabric.springs_at(node)) {
+  for_each_surface_spring_at(model.fabric, x, node, at,
+                             [&](int s, const Eigen::Vector3d& a, const Eigen::Vector3d& b, bool) {
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
-    if (!stretches_surface(spring.kind)) continue;
-    const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
-    const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
-    const double before = spring_penalty(model, s, a, b).energy;
-    change += (spring.a == node ? spring_penalty(model, s, at, b) : spring_penalty(model, s, a, at)).energy - before;
-  }
+    const double before = spring_penalty(model, s, x[static_cast<std::size_t>(spring.a)],
+                                         x[static_cast<std::size_t>(spring.b)]).energy;
+    change += spring_penalty(model, s, a, b).energy - before;
+  });
   return change;
 }
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "fabform/geometry/nearby_queries.hpp"
-#include "fabform/model/force_scale.hpp"
+#include "fabform/model/contact_penalty.hpp"
 #include "fabform/model/model.hpp"
 #include "model/sum_in_index_order.hpp"
 
@@ -21,28 +21,6 @@ constexpr double kOnsetShare = 0.02;
 // body is the surface's normal, not the direction to the closest point.
 constexpr double kOnSurfaceOfSpring = 1e-12;
 
-bool stretches_surface(SpringKind kind) { return kind != SpringKind::bend; }
-
-double mean_surface_spring_length(const Fabric& fabric) {
-  double sum = 0.0;
-  int count = 0;
-  for (const Spring& s : fabric.springs())
-    if (s.kind == SpringKind::warp || s.kind == SpringKind::weft) sum += s.rest_length, ++count;
-  return count > 0 ? sum / count : 0.0;
-}
-
-// φ(δ), φ'(δ), φ''(δ) of spring_contact.hpp.
-struct Onset {
-  double value, slope, curvature;
-};
-Onset onset_penalty(double depth, double stiffness, double onset) {
-  if (depth < onset)
-    return {stiffness * depth * depth * depth / (6.0 * onset), stiffness * depth * depth / (2.0 * onset),
-            stiffness * depth / onset};
-  return {stiffness * (0.5 * depth * depth - 0.5 * onset * depth + onset * onset / 6.0),
-          stiffness * (depth - 0.5 * onset), stiffness};
-}
-
 }  // namespace
 
 SpringContact::SpringContact(const Model& model, std::vector<int> bodies, double stiffness_N_m)
@@ -56,11 +34,7 @@ SpringContact::SpringContact(const Model& model, std::vector<int> bodies, double
       throw std::invalid_argument("spring contact: no body " + std::to_string(b));
 }
 
-double SpringContact::default_stiffness(const Model& model) {
-  const double length = mean_surface_spring_length(model.fabric);
-  const double scale = spring_force_scale_N(model);
-  return length > 0.0 && scale > 0.0 ? kStiffnessRatio * scale / length : 0.0;
-}
+double SpringContact::default_stiffness(const Model& model) { return contact_stiffness(model, kStiffnessRatio); }
 
 std::string SpringContact::describe(const Model& model) const {
   std::string names;
@@ -90,8 +64,9 @@ std::vector<SampleDepth> SpringContact::samples_inside(NearbyQueries& queries, c
       const Eigen::Vector3d p = a + t * (b - a);
       const SurfacePoint q = queries.closest(body, p);
       if (!(q.signed_distance < 0.0)) continue;
-      const Eigen::Vector3d inward =
-          q.distance > kOnSurfaceOfSpring * length ? Eigen::Vector3d((p - q.point) / q.distance) : Eigen::Vector3d(-q.normal);
+      const Eigen::Vector3d inward = q.distance > kOnSurfaceOfSpring * length
+                                         ? Eigen::Vector3d((p - q.point) / q.distance)
+                                         : Eigen::Vector3d(-q.normal);
       inside.push_back({body, t, -q.signed_distance, inward});
     }
   }
@@ -101,7 +76,7 @@ std::vector<SampleDepth> SpringContact::samples_inside(NearbyQueries& queries, c
 SpringContact::Penalty SpringContact::penalty(const std::vector<SampleDepth>& samples) const {
   Penalty total;
   for (const SampleDepth& s : samples) {
-    const Onset phi = onset_penalty(s.depth, stiffness_N_m_, onset_m_);
+    const OnsetPenalty phi = onset_penalty(s.depth, stiffness_N_m_, onset_m_);
     total.energy += phi.value / kSamples;
     total.gradient_a += (phi.slope / kSamples * (1.0 - s.along)) * s.inward;
     total.gradient_b += (phi.slope / kSamples * s.along) * s.inward;
@@ -125,7 +100,8 @@ std::vector<std::vector<SampleDepth>> SpringContact::every_spring(const Model& m
     if (!stretches_surface(s.kind)) return;
     std::vector<double> ends_apart(listed);
     for (std::size_t b = 0; b < listed; ++b)
-      ends_apart[b] = distance[static_cast<std::size_t>(s.a) * listed + b] + distance[static_cast<std::size_t>(s.b) * listed + b];
+      ends_apart[b] = distance[static_cast<std::size_t>(s.a) * listed + b] +
+                      distance[static_cast<std::size_t>(s.b) * listed + b];
     samples[static_cast<std::size_t>(i)] = samples_inside(queries, x[static_cast<std::size_t>(s.a)],
                                                           x[static_cast<std::size_t>(s.b)], ends_apart.data());
   });
@@ -136,15 +112,11 @@ Eigen::Vector3d SpringContact::force_at(const Model& model, const Positions& x, 
                                         const Eigen::Vector3d& at) const {
   NearbyQueries queries(model.bodies);
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  for (const int s : model.fabric.springs_at(node)) {
-    const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
-    if (!stretches_surface(spring.kind)) continue;
-    const bool is_a = spring.a == node;
-    const Eigen::Vector3d& a = is_a ? at : x[static_cast<std::size_t>(spring.a)];
-    const Eigen::Vector3d& b = is_a ? x[static_cast<std::size_t>(spring.b)] : at;
+  for_each_surface_spring_at(model.fabric, x, node, at,
+                             [&](int, const Eigen::Vector3d& a, const Eigen::Vector3d& b, bool is_a) {
     const Penalty p = penalty(samples_inside(queries, a, b));
     force -= is_a ? p.gradient_a : p.gradient_b;
-  }
+  });
   return force;
 }
 
@@ -170,16 +142,13 @@ double SpringContact::node_energy_change(const Model& model, const Positions& x,
                                          const Eigen::Vector3d& at) const {
   NearbyQueries queries(model.bodies);
   double change = 0.0;
-  for (const int s : model.fabric.springs_at(node)) {
+  for_each_surface_spring_at(model.fabric, x, node, at,
+                             [&](int s, const Eigen::Vector3d& a, const Eigen::Vector3d& b, bool) {
     const Spring& spring = model.fabric.springs()[static_cast<std::size_t>(s)];
-    if (!stretches_surface(spring.kind)) continue;
-    const Eigen::Vector3d& a = x[static_cast<std::size_t>(spring.a)];
-    const Eigen::Vector3d& b = x[static_cast<std::size_t>(spring.b)];
-    const double before = penalty(samples_inside(queries, a, b)).energy;
-    const double after = penalty(spring.a == node ? samples_inside(queries, at, b)
-                                                  : samples_inside(queries, a, at)).energy;
-    change += after - before;
-  }
+    const double before = penalty(samples_inside(queries, x[static_cast<std::size_t>(spring.a)],
+                                                 x[static_cast<std::size_t>(spring.b)])).energy;
+    change += penalty(samples_inside(queries, a, b)).energy - before;
+  });
   return change;
 }
 

@@ -114,8 +114,9 @@ double first_order_change(const std::vector<Eigen::Vector3d>& forces,
   return change;
 }
 
-// The terms' checks of the steps from `from` (Term::step_check); the terms that let any step take none.
-std::vector<std::unique_ptr<StepCheck>> step_checks(const Model& model, const std::vector<Eigen::Vector3d>& from) {
+// The terms' checks of the steps from `from` (Term::step_check); a term that lets any step has none.
+std::vector<std::unique_ptr<StepCheck>> step_checks(const Model& model,
+                                                    const std::vector<Eigen::Vector3d>& from) {
   std::vector<std::unique_ptr<StepCheck>> checks;
   for (const auto& term : model.terms)
     if (auto check = term->step_check(model, from)) checks.push_back(std::move(check));

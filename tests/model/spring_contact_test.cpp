@@ -91,9 +91,10 @@ TEST(SpringContact, ItsForcesAreItsEnergysDerivativeAndPushOut) {
   }
   std::vector<Eigen::Vector3d> summed(x.size(), Eigen::Vector3d::Zero());
   term.add_forces(model, x, summed);
-  for (int node = 0; node < model.node_count(); ++node)
-    EXPECT_LT((summed[static_cast<std::size_t>(node)] - term.force_at(model, x, node, x[static_cast<std::size_t>(node)])).norm(),
-              1e-12 * kStiffness * 1e-3);
+  for (int node = 0; node < model.node_count(); ++node) {
+    const auto k = static_cast<std::size_t>(node);
+    EXPECT_LT((summed[k] - term.force_at(model, x, node, x[k])).norm(), 1e-12 * kStiffness * 1e-3) << node;
+  }
 }
 
 // Each sample's depth is its distance below one face, linear in the nodes' positions: the
