@@ -6,9 +6,8 @@ edges (result.json's figures.deepest_spring_cut_m) and wrapping the edges (`wrap
 30`) makes newton stall. The issue's target is a contact variant that forms every case cleanly:
 the "springs" variant (`spring_contact = true` on the body: springs kept out of the body along
 their length by a penalty on their points' depth) clean in 100 % of the cases, in at most 3 × the
-solver time of
-node-only contact on the same case (the median of the ratios, over the cases where node-only
-contact converged). Timings on a shared machine drift, so each case's variants run next to
+solver time of node-only contact on the same case (the median of the ratios, over the cases where
+node-only contact converged). Timings on a shared machine drift, so each case's variants run next to
 each other and the ratio is taken case by case.
 
 What it does: for each part (trimesh's featuretype, inches; octagonal_pocket, metres;
@@ -26,8 +25,8 @@ under it (its placed bounding box, read from the STL here, rotations as fabform 
   the blank's perimeter held in x, y and z 1 mm above the table, its inside lifted 5 mm clear of
   the part, and a vacuum of 3000 Pa ([pressure]) pulls it onto the part and the table round it.
 Resolutions 40 and 60 divisions; orientations as is, turned 90° about z, tilted 10° about x;
-μ 0 and 0.3; variants nodes (no key), wrap (`wrap_edges_deg = 30`), edges
-(`edge_contact_deg = 2`) and springs (`spring_contact = true`). newton, tolerance_N 1e-5, max_iterations 300 (a step).
+μ 0 and 0.3; variants nodes (no key), wrap (`wrap_edges_deg = 30`), edges (`edge_contact_deg =
+2`) and springs (`spring_contact = true`). newton, tolerance_N 1e-5, max_iterations 300 (a step).
 A case is clean when result.json says converged at every load step, its residual is at most
 1e-5 N and figures.deepest_spring_cut_m at most 1e-4 m. It prints a table of the cases and per
 variant the fraction clean, the median iterations and the median over cases of the time ratio

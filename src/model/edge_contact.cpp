@@ -24,9 +24,6 @@ namespace {
 constexpr double kStiffnessRatio = 1000.0;
 // An edge's weight falls to 0 within this share of the mean spring's rest length past its ends.
 constexpr double kMarginShare = 0.25;
-// The penalty's stiffness rises from 0 to κ over this share of the mean spring's rest length of
-// depth, so that Newton's matrix changes continuously as a spring reaches under an edge.
-constexpr double kOnsetShare = 0.02;
 // A spring whose direction is within this share of its length parallel to the bisecting plane
 // runs along the edge: it reaches under it nowhere in particular.
 constexpr double kParallelShare = 1e-9;
@@ -209,7 +206,7 @@ struct EdgeContact::BodyEdges {
 EdgeContact::EdgeContact(const Model& model, const std::vector<double>& angles_deg, double stiffness_N_m)
     : stiffness_N_m_(stiffness_N_m),
       margin_m_(kMarginShare * mean_surface_spring_length(model.fabric)),
-      onset_m_(kOnsetShare * mean_surface_spring_length(model.fabric)) {
+      onset_m_(contact_onset_m(model.fabric)) {
   if (!(std::isfinite(stiffness_N_m) && stiffness_N_m > 0.0))
     throw std::invalid_argument("edge contact: the penalty's stiffness must be positive and finite");
   const double spring = mean_surface_spring_length(model.fabric);

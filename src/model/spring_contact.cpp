@@ -13,10 +13,7 @@ namespace fabform {
 namespace {
 
 // κ over the softest spring's stiffness at rest (default_stiffness says why so stiff).
-constexpr double kStiffnessRatio = 1e5;
-// The penalty's stiffness rises from 0 to κ over this share of the mean spring's rest length of
-// depth, so that Newton's matrix changes continuously as a spring reaches into a body.
-constexpr double kOnsetShare = 0.02;
+constexpr double kSpringContactStiffnessRatio = 1e5;
 // Below this share of a spring's length a sample lies on the surface: its direction into the
 // body is the surface's normal, not the direction to the closest point.
 constexpr double kOnSurfaceOfSpring = 1e-12;
@@ -26,7 +23,7 @@ constexpr double kOnSurfaceOfSpring = 1e-12;
 SpringContact::SpringContact(const Model& model, std::vector<int> bodies, double stiffness_N_m)
     : bodies_(std::move(bodies)),
       stiffness_N_m_(stiffness_N_m),
-      onset_m_(kOnsetShare * mean_surface_spring_length(model.fabric)) {
+      onset_m_(contact_onset_m(model.fabric)) {
   if (!(std::isfinite(stiffness_N_m) && stiffness_N_m > 0.0))
     throw std::invalid_argument("spring contact: the penalty's stiffness must be positive and finite");
   for (const int b : bodies_)
@@ -34,7 +31,7 @@ SpringContact::SpringContact(const Model& model, std::vector<int> bodies, double
       throw std::invalid_argument("spring contact: no body " + std::to_string(b));
 }
 
-double SpringContact::default_stiffness(const Model& model) { return contact_stiffness(model, kStiffnessRatio); }
+double SpringContact::default_stiffness(const Model& model) { return contact_stiffness(model, kSpringContactStiffnessRatio); }
 
 std::string SpringContact::describe(const Model& model) const {
   std::string names;

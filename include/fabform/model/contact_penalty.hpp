@@ -36,6 +36,11 @@ void for_each_surface_spring_at(const Fabric& fabric, const std::vector<Eigen::V
 /// The mean rest length of the warp and weft springs (0 for a fabric without any).
 double mean_surface_spring_length(const Fabric& fabric);
 
+/// The onset h over which a penalty's stiffness rises to κ, as a share of the mean surface spring.
+constexpr double kContactOnsetShare = 0.02;
+/// h for a fabric.
+inline double contact_onset_m(const Fabric& fabric) { return kContactOnsetShare * mean_surface_spring_length(fabric); }
+
 /// `ratio` × the model's softest warp or weft spring's stiffness at rest (N/m), 0 when its tables
 /// start slack.
 double contact_stiffness(const Model& model, double ratio);
