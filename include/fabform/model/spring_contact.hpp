@@ -40,10 +40,10 @@ class SpringContact final : public Term {
   /// is not positive and finite or a body the model does not have.
   SpringContact(const Model& model, std::vector<int> bodies, double stiffness_N_m);
 
-  /// κ for a model: 1e5 × its softest warp or weft spring's stiffness at rest. Only the few
-  /// samples near a spring's deepest point push, so the depth at which they hold a spring falls
-  /// with the square root of κ: on the sweep's featuretype die a spring reaches 0.16 mm in at
-  /// 1e4, 0.09 mm at 1e5 (tools/bench_cad_contact.py).
+  /// κ for a model: 1e5 × its softest warp or weft spring's stiffness at rest, a hundred times the
+  /// edge penalty's: only the few samples near a spring's deepest point push, and the depth at
+  /// which they hold it falls slowly with κ (tools/bench_cad_contact.py's springs variant keeps
+  /// every cut within 0.16 mm at 1e5).
   static double default_stiffness(const Model& model);
 
   /// How many points along a spring are kept out of the bodies.
