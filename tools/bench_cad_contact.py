@@ -76,7 +76,7 @@ MODES = ("punch", "die")
 RESOLUTIONS = (40, 60)
 ORIENTATIONS = {"asis": (0.0, 0.0, 0.0), "turned": (0.0, 0.0, 90.0), "tilted": (10.0, 0.0, 0.0)}
 FRICTIONS = (0.0, 0.3)
-VARIANT_KEYS = {"nodes": None, "wrap": "wrap_edges_deg", "edges": "edge_contact_deg", "springs": "spring_contact"}
+VARIANTS = ("nodes", "wrap", "edges", "springs")
 MARGIN_M = 0.03          # blank beyond the part's placed footprint, each side
 GAP_M = 0.002            # the punch's top under the blank at the start
 STEPS = 10
@@ -131,8 +131,9 @@ def ceil_mm(x: float) -> float:
     return math.ceil(x * 1000.0 - 1e-9) / 1000.0
 
 
-def scene_text(case: dict, variant_angle: float) -> str:
-    """A case's scene: blank, part, and the mode's holder or vacuum."""
+def scene_text(case: dict, contact_line: str) -> str:
+    """A case's scene: blank, part (with its variant's contact line, if any), and the mode's holder
+    or vacuum."""
     mesh, units, travel = PARTS[case["part"]]
     lo, hi = case["bbox"]
     width, height = ceil_mm(hi[0] - lo[0] + 2 * MARGIN_M), ceil_mm(hi[1] - lo[1] + 2 * MARGIN_M)
@@ -145,7 +146,6 @@ def scene_text(case: dict, variant_angle: float) -> str:
     else:   # standing on the table, its top TABLE_GAP_M under the perimeter (z = 0)
         translation = [-centre[0], -centre[1], -TABLE_GAP_M - lo[2]]
         top = hi[2] - lo[2] - TABLE_GAP_M
-    variant = VARIANT_KEYS[case["variant"]]
     lines = [
         f"# tools/bench_cad_contact.py: {case['name']}",
         f"# {case['part']} ({units}) as {case['mode']}, {case['res']} divisions, {case['orientation']} "
@@ -159,10 +159,8 @@ def scene_text(case: dict, variant_angle: float) -> str:
         f"translation_m = [{', '.join(f'{round(t, 9) + 0.0:.9g}' for t in translation)}]",
         f"friction = {case['mu']:g}",
     ]
-    if variant == "spring_contact":
-        lines.append(f"{variant} = true")
-    elif variant:
-        lines.append(f"{variant} = {variant_angle:g}")
+    if contact_line:
+        lines.append(contact_line)
     if case["mode"] == "punch":
         lines += ["", "[body.path]", f"translation_m = [0.0, 0.0, {travel:g}]", f"steps = {STEPS}",
                   "", "[clamp]", "width_m = 0.015", "force_N = 40.0", "friction = 0.3"]
@@ -280,11 +278,11 @@ def main() -> int:
             raise ValueError(f"--{what}: {text!r}: one or more of {', '.join(known)}, comma-separated, each once")
         return items
     try:
-        variants = listed(args.variants, VARIANT_KEYS, "variants")
+        variants = listed(args.variants, VARIANTS, "variants")
         parts = listed(args.parts, PARTS, "parts")
         modes = listed(args.modes, MODES, "modes")
-        if args.target not in VARIANT_KEYS:
-            raise ValueError(f"--target: {args.target!r}: one of {', '.join(VARIANT_KEYS)}")
+        if args.target not in VARIANTS:
+            raise ValueError(f"--target: {args.target!r}: one of {', '.join(VARIANTS)}")
         if args.jobs < 1 or args.timeout < 0 or not 0 <= args.wrap_deg < 180 or not 0 < args.edge_deg < 180:
             raise ValueError("--jobs must be at least 1, --timeout 0 or more, --wrap-deg in [0, 180), --edge-deg in (0, 180)")
         if not FABFORM.exists():
@@ -295,7 +293,8 @@ def main() -> int:
         return 2
     resolutions = RESOLUTIONS[:1] if args.quick else RESOLUTIONS
     orientations = ["asis"] if args.quick else list(ORIENTATIONS)
-    angle = {"nodes": 0.0, "wrap": args.wrap_deg, "edges": args.edge_deg, "springs": 0.0}
+    contact_line = {"nodes": "", "wrap": f"wrap_edges_deg = {args.wrap_deg:g}",
+                    "edges": f"edge_contact_deg = {args.edge_deg:g}", "springs": "spring_contact = true"}
 
     (args.out / "scenes").mkdir(parents=True, exist_ok=True)
     cases = []
@@ -312,7 +311,7 @@ def main() -> int:
                             case = dict(name=name, part=part, mode=mode, res=res, orientation=orientation,
                                         mu=mu, variant=variant, bbox=bbox)
                             case["scene"] = args.out / "scenes" / f"{name}.toml"
-                            case["scene"].write_text(scene_text(case, angle[variant]))
+                            case["scene"].write_text(scene_text(case, contact_line[variant]))
                             cases.append(case)
     print(f"bench_cad_contact.py: {len(cases)} cases, {args.jobs} at a time, into {args.out}", file=sys.stderr)
 

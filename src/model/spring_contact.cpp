@@ -42,7 +42,8 @@ std::string SpringContact::describe(const Model& model) const {
 }
 
 std::vector<SampleDepth> SpringContact::samples_inside(NearbyQueries& queries, const Eigen::Vector3d& a,
-                                                       const Eigen::Vector3d& b, const double* ends_apart) const {
+                                                       const Eigen::Vector3d& b, const double* a_distances,
+                                                       const double* b_distances) const {
   std::vector<SampleDepth> inside;
   const double length = (b - a).norm();
   if (!a.allFinite() || !b.allFinite()) return inside;  // a broken state, being measured
@@ -50,8 +51,8 @@ std::vector<SampleDepth> SpringContact::samples_inside(NearbyQueries& queries, c
     const int body = bodies_[listed];
     // The signed distance changes no faster than the point moves, so a segment whose ends' distances
     // add up to more than its length has no point inside.
-    if (ends_apart) {
-      if (ends_apart[listed] > length) continue;
+    if (a_distances) {
+      if (a_distances[listed] + b_distances[listed] > length) continue;
     } else if (queries.clearance_bound(body, a) + queries.clearance_bound(body, b) > length ||
                queries.closest(body, a).signed_distance + queries.closest(body, b).signed_distance > length) {
       continue;
@@ -95,12 +96,9 @@ std::vector<std::vector<SampleDepth>> SpringContact::every_spring(const Model& m
   for_each_nearby(static_cast<int>(springs.size()), model.bodies, [&](int i, NearbyQueries& queries) {
     const Spring& s = springs[static_cast<std::size_t>(i)];
     if (!stretches_surface(s.kind)) return;
-    std::vector<double> ends_apart(listed);
-    for (std::size_t b = 0; b < listed; ++b)
-      ends_apart[b] = distance[static_cast<std::size_t>(s.a) * listed + b] +
-                      distance[static_cast<std::size_t>(s.b) * listed + b];
-    samples[static_cast<std::size_t>(i)] = samples_inside(queries, x[static_cast<std::size_t>(s.a)],
-                                                          x[static_cast<std::size_t>(s.b)], ends_apart.data());
+    const auto a = static_cast<std::size_t>(s.a), b = static_cast<std::size_t>(s.b);
+    samples[static_cast<std::size_t>(i)] =
+        samples_inside(queries, x[a], x[b], &distance[a * listed], &distance[b * listed]);
   });
   return samples;
 }

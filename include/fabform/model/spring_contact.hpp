@@ -73,10 +73,11 @@ class SpringContact final : public Term {
     Eigen::Vector3d gradient_a = Eigen::Vector3d::Zero();
     Eigen::Vector3d gradient_b = Eigen::Vector3d::Zero();
   };
-  /// The samples of segment a–b inside the bodies; `ends_apart`, when given, holds for each listed
-  /// body the sum of a's and b's signed distances to it (else they are looked up).
+  /// The samples of segment a–b inside the bodies; `a_distances` and `b_distances`, when given,
+  /// hold a's and b's signed distances to each listed body (else they are looked up).
   std::vector<SampleDepth> samples_inside(NearbyQueries& queries, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                          const double* ends_apart = nullptr) const;
+                                          const double* a_distances = nullptr,
+                                          const double* b_distances = nullptr) const;
   Penalty penalty(const std::vector<SampleDepth>& samples) const;
   /// Each surface spring's samples inside at x (none for a bending spring), in spring order.
   std::vector<std::vector<SampleDepth>> every_spring(const Model& model, const Positions& x) const;
